@@ -1,0 +1,131 @@
+//! Homogeneous clipping, before any divide: a triangle is clipped against the six frustum
+//! planes −w ≤ x, y, z ≤ w and against w ≥ [`W_MIN`], so the setup stage never divides by a
+//! w that is zero or negative.
+
+use glam::Vec4;
+
+use super::vertex::ClipVertex;
+
+/// The smallest w that survives clipping. A vertex at (0, 0, 0, 0) lies inside all six
+/// frustum planes, so this plane is what keeps 1/w finite.
+pub const W_MIN: f32 = 1e-30;
+
+/// Each plane adds at most one vertex: 3 + 7.
+const MAX_POLY: usize = 10;
+
+/// The signed distances of a clip-space position to each clip plane; negative is outside.
+#[inline]
+fn distances(p: Vec4) -> [f32; 7] {
+    [
+        p.w + p.x,
+        p.w - p.x,
+        p.w + p.y,
+        p.w - p.y,
+        p.w + p.z,
+        p.w - p.z,
+        p.w - W_MIN,
+    ]
+}
+
+/// A bit per plane that the position is outside of.
+#[inline]
+pub fn outcode(p: Vec4) -> u8 {
+    let d = distances(p);
+    let mut code = 0;
+    for (i, &v) in d.iter().enumerate() {
+        // `!(v >= 0)` also treats NaN as outside, so NaN positions are dropped.
+        if !(v >= 0.0) {
+            code |= 1 << i;
+        }
+    }
+    code
+}
+
+/// Clips triangle (a, b, c) and calls `emit` with the resulting convex polygon (at least three
+/// vertices, in the original winding), or not at all when nothing is left.
+pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnce(&[ClipVertex])) {
+    let codes = [outcode(a.pos), outcode(b.pos), outcode(c.pos)];
+    if codes[0] | codes[1] | codes[2] == 0 {
+        emit(&[*a, *b, *c]);
+        return;
+    }
+    if codes[0] & codes[1] & codes[2] != 0 {
+        return;
+    }
+    let mut poly = [*a; MAX_POLY];
+    poly[1] = *b;
+    poly[2] = *c;
+    let mut n = 3;
+    let mut next = [*a; MAX_POLY];
+    let all = codes[0] | codes[1] | codes[2];
+    for plane in 0..7 {
+        if all & (1 << plane) == 0 {
+            continue;
+        }
+        let mut m = 0;
+        for i in 0..n {
+            let (p, q) = (&poly[i], &poly[(i + 1) % n]);
+            let (dp, dq) = (distances(p.pos)[plane], distances(q.pos)[plane]);
+            if dp >= 0.0 {
+                next[m] = *p;
+                m += 1;
+            }
+            if (dp >= 0.0) != (dq >= 0.0) {
+                // Always interpolate from the inside vertex so that an edge shared by two
+                // triangles is cut at the same point whichever triangle clips it.
+                let (inside, outside, di, dout) = if dp >= 0.0 { (p, q, dp, dq) } else { (q, p, dq, dp) };
+                let t = di / (di - dout);
+                next[m] = inside.lerp(outside, t);
+                m += 1;
+            }
+        }
+        n = m;
+        if n < 3 {
+            return;
+        }
+        std::mem::swap(&mut poly, &mut next);
+    }
+    emit(&poly[..n]);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f32, y: f32, z: f32, w: f32) -> ClipVertex {
+        ClipVertex {
+            pos: Vec4::new(x, y, z, w),
+            color: Vec4::ONE,
+        }
+    }
+
+    #[test]
+    fn inside_passes_through_and_outside_is_dropped() {
+        let mut got = 0;
+        triangle(&v(0., 0., 0., 1.), &v(0.5, 0., 0., 1.), &v(0., 0.5, 0., 1.), |p| got = p.len());
+        assert_eq!(got, 3);
+        let mut called = false;
+        triangle(&v(2., 0., 0., 1.), &v(3., 0., 0., 1.), &v(2., 1., 0., 1.), |_| called = true);
+        assert!(!called);
+    }
+
+    #[test]
+    fn behind_the_eye_is_clipped_before_the_divide() {
+        let mut out = Vec::new();
+        triangle(&v(0., 0., 0., 1.), &v(0., 0., 0., -1.), &v(0.5, 0.5, 0., 1.), |p| out = p.to_vec());
+        assert!(out.len() >= 3);
+        for p in &out {
+            assert!(p.pos.w >= W_MIN, "{:?}", p.pos);
+            assert!(p.pos.x.abs() <= p.pos.w * 1.0001 && p.pos.z.abs() <= p.pos.w * 1.0001);
+        }
+    }
+
+    #[test]
+    fn screen_covering_triangle_stays_within_the_vertex_limit() {
+        let mut n = 0;
+        triangle(&v(-10., -10., 0., 1.), &v(30., -10., 0., 1.), &v(-10., 30., 0., 1.), |p| n = p.len());
+        assert_eq!(n, 4, "clipped to the viewport square");
+        triangle(&v(-100., -10., -5., 1.), &v(100., -10., 5., 1.), &v(0., 100., 0.5, 1.), |p| n = p.len());
+        assert!((3..=MAX_POLY).contains(&n));
+    }
+}

@@ -1,0 +1,321 @@
+//! Render targets: the color, depth and stencil buffers that every surface, pbuffer, pixmap,
+//! window and M3G `Image2D` target owns.
+//!
+//! Rows are stored bottom-up (row 0 is window y = 0), as GL addresses them, so `glReadPixels`
+//! is a row copy. Color is always stored as RGBA8 words (`[r, g, b, a]` bytes in memory), but
+//! every stored value is exactly representable in the target's format: RGB565 values are
+//! quantized on write and expanded by bit replication, and formats without alpha keep 255.
+//! One storage layout means one set of span routines; the format only changes the quantizer.
+
+/// The color formats a target can have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ColorFormat {
+    Rgb565,
+    Rgb888,
+    Rgba8888,
+}
+
+impl ColorFormat {
+    /// Bits per channel, red, green, blue, alpha.
+    pub fn bits(self) -> [u32; 4] {
+        match self {
+            ColorFormat::Rgb565 => [5, 6, 5, 0],
+            ColorFormat::Rgb888 => [8, 8, 8, 0],
+            ColorFormat::Rgba8888 => [8, 8, 8, 8],
+        }
+    }
+
+    /// Converts a color in [0, 1] (clamped here) to the stored RGBA8 word, rounding to the
+    /// nearest value the format can hold: `round(c · (2ⁿ − 1))`.
+    pub fn encode(self, rgba: [f32; 4]) -> u32 {
+        let b = self.bits();
+        let mut bytes = [0u8; 4];
+        for i in 0..4 {
+            bytes[i] = if b[i] == 0 {
+                255
+            } else {
+                expand_to_8(unorm(rgba[i], b[i]), b[i])
+            };
+        }
+        u32::from_le_bytes(bytes)
+    }
+
+    /// Requantizes an RGBA8 word so it is representable in this format.
+    pub fn quantize8(self, word: u32) -> u32 {
+        let b = self.bits();
+        let mut bytes = word.to_le_bytes();
+        for i in 0..4 {
+            bytes[i] = match b[i] {
+                0 => 255,
+                8 => bytes[i],
+                n => expand_to_8(((bytes[i] as u32 * ((1 << n) - 1) + 127) / 255) as u32, n),
+            };
+        }
+        u32::from_le_bytes(bytes)
+    }
+}
+
+/// `round(clamp(c) · (2ⁿ − 1))`; NaN maps to 0 so garbage never reaches memory.
+pub fn unorm(c: f32, bits: u32) -> u32 {
+    let max = ((1u32 << bits) - 1) as f32;
+    let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
+    (c * max + 0.5) as u32
+}
+
+/// Widens an n-bit unsigned normalized value to 8 bits by bit replication, which maps
+/// 0 → 0 and 2ⁿ − 1 → 255.
+pub fn expand_to_8(v: u32, bits: u32) -> u8 {
+    match bits {
+        8 => v as u8,
+        5 => ((v << 3) | (v >> 2)) as u8,
+        6 => ((v << 2) | (v >> 4)) as u8,
+        4 => ((v << 4) | v) as u8,
+        1 => (v * 255) as u8,
+        n => ((v * 255 + ((1 << n) - 1) / 2) / ((1 << n) - 1)) as u8,
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DepthFormat {
+    D16,
+    D24,
+}
+
+impl DepthFormat {
+    pub fn bits(self) -> u32 {
+        match self {
+            DepthFormat::D16 => 16,
+            DepthFormat::D24 => 24,
+        }
+    }
+
+    pub fn max(self) -> u32 {
+        (1 << self.bits()) - 1
+    }
+
+    /// Quantizes a window-space depth in [0, 1] (clamped) to the format: `round(z · (2ⁿ − 1))`.
+    pub fn quantize(self, z: f64) -> u32 {
+        let z = if z > 0.0 { z.min(1.0) } else { 0.0 };
+        (z * self.max() as f64 + 0.5) as u32
+    }
+}
+
+/// What a target is made of; equal descriptions make interchangeable targets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct TargetFormat {
+    pub color: ColorFormat,
+    pub depth: Option<DepthFormat>,
+    pub stencil_bits: u32,
+}
+
+/// An axis-aligned pixel rectangle, half-open: `x0 <= x < x1`, `y0 <= y < y1`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Rect {
+    pub x0: i32,
+    pub y0: i32,
+    pub x1: i32,
+    pub y1: i32,
+}
+
+impl Rect {
+    pub fn new(x: i32, y: i32, w: i32, h: i32) -> Rect {
+        Rect {
+            x0: x,
+            y0: y,
+            x1: x.saturating_add(w),
+            y1: y.saturating_add(h),
+        }
+    }
+
+    pub fn intersect(self, o: Rect) -> Rect {
+        Rect {
+            x0: self.x0.max(o.x0),
+            y0: self.y0.max(o.y0),
+            x1: self.x1.min(o.x1),
+            y1: self.y1.min(o.y1),
+        }
+    }
+
+    pub fn is_empty(self) -> bool {
+        self.x0 >= self.x1 || self.y0 >= self.y1
+    }
+}
+
+/// A color, depth and stencil buffer set of one size.
+#[derive(Clone, Debug)]
+pub struct Target {
+    width: u32,
+    height: u32,
+    format: TargetFormat,
+    color: Vec<u32>,
+    depth: Vec<u32>,
+    stencil: Vec<u8>,
+}
+
+/// Channel write mask for color clears and fragment writes.
+pub type ColorMask = [bool; 4];
+
+impl Target {
+    /// A target with undefined-but-deterministic contents (zeros; depth at its maximum).
+    /// Callers check sizes first: the buffers are allocated here.
+    pub fn new(width: u32, height: u32, format: TargetFormat) -> Target {
+        let n = width as usize * height as usize;
+        Target {
+            width,
+            height,
+            format,
+            color: vec![format.color.encode([0.0, 0.0, 0.0, 0.0]); n],
+            depth: if format.depth.is_some() {
+                vec![format.depth.map_or(0, DepthFormat::max); n]
+            } else {
+                Vec::new()
+            },
+            stencil: if format.stencil_bits > 0 {
+                vec![0; n]
+            } else {
+                Vec::new()
+            },
+        }
+    }
+
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+    pub fn format(&self) -> TargetFormat {
+        self.format
+    }
+    pub fn bounds(&self) -> Rect {
+        Rect::new(0, 0, self.width as i32, self.height as i32)
+    }
+
+    /// Color words, bottom row first.
+    pub fn color(&self) -> &[u32] {
+        &self.color
+    }
+    pub fn color_mut(&mut self) -> &mut [u32] {
+        &mut self.color
+    }
+    /// Quantized depth values (empty without a depth buffer), bottom row first.
+    pub fn depth(&self) -> &[u32] {
+        &self.depth
+    }
+    pub fn stencil(&self) -> &[u8] {
+        &self.stencil
+    }
+
+    /// The pixel at (x, y) as `[r, g, b, a]` bytes.
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 4] {
+        self.color[(y * self.width + x) as usize].to_le_bytes()
+    }
+
+    /// Disjoint mutable views of the three buffers, for the fragment stage.
+    pub fn buffers_mut(&mut self) -> (&mut [u32], &mut [u32], &mut [u8]) {
+        (&mut self.color, &mut self.depth, &mut self.stencil)
+    }
+
+    /// Fills `rect` (clipped to the target) with `rgba`, writing only the channels in `mask`.
+    pub fn clear_color(&mut self, rect: Rect, rgba: [f32; 4], mask: ColorMask) {
+        let word = self.format.color.encode(rgba);
+        let keep = keep_mask(mask);
+        let width = self.width as usize;
+        for_rows(rect.intersect(self.bounds()), width, |range| {
+            let row = &mut self.color[range];
+            if keep == 0 {
+                row.fill(word);
+            } else {
+                row.iter_mut().for_each(|p| *p = (*p & keep) | (word & !keep));
+            }
+        });
+    }
+
+    /// Fills the depth buffer inside `rect` with `z` in [0, 1].
+    pub fn clear_depth(&mut self, rect: Rect, z: f64) {
+        let Some(f) = self.format.depth else { return };
+        let v = f.quantize(z);
+        let width = self.width as usize;
+        for_rows(rect.intersect(self.bounds()), width, |range| {
+            self.depth[range].fill(v)
+        });
+    }
+
+    /// Fills the stencil buffer inside `rect` with `value`, writing only the bits in `mask`.
+    pub fn clear_stencil(&mut self, rect: Rect, value: u32, mask: u32) {
+        if self.format.stencil_bits == 0 {
+            return;
+        }
+        let (v, m) = (value as u8, mask as u8);
+        let width = self.width as usize;
+        for_rows(rect.intersect(self.bounds()), width, |range| {
+            self.stencil[range]
+                .iter_mut()
+                .for_each(|s| *s = (*s & !m) | (v & m))
+        });
+    }
+}
+
+/// The bits of a stored word that a color mask protects.
+pub fn keep_mask(mask: ColorMask) -> u32 {
+    let mut keep = 0u32;
+    for (i, &write) in mask.iter().enumerate() {
+        if !write {
+            keep |= 0xff << (8 * i);
+        }
+    }
+    keep
+}
+
+fn for_rows(r: Rect, width: usize, mut f: impl FnMut(std::ops::Range<usize>)) {
+    if r.is_empty() {
+        return;
+    }
+    for y in r.y0..r.y1 {
+        let start = y as usize * width;
+        f(start + r.x0 as usize..start + r.x1 as usize);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rgb565_round_trips_through_storage() {
+        for v in 0..32u32 {
+            let c = v as f32 / 31.0;
+            let w = ColorFormat::Rgb565.encode([c, 0.0, c, 0.5]);
+            let b = w.to_le_bytes();
+            assert_eq!(b[0] as u32 >> 3, v);
+            assert_eq!(b[2] as u32 >> 3, v);
+            assert_eq!(b[3], 255, "no alpha bits reads as 1");
+            assert_eq!(ColorFormat::Rgb565.quantize8(w), w);
+        }
+    }
+
+    #[test]
+    fn unorm_rounds_and_clamps() {
+        assert_eq!(unorm(0.5, 8), 128);
+        assert_eq!(unorm(-1.0, 8), 0);
+        assert_eq!(unorm(2.0, 8), 255);
+        assert_eq!(unorm(f32::NAN, 8), 0);
+        assert_eq!(DepthFormat::D16.quantize(1.0), 65535);
+        assert_eq!(DepthFormat::D24.quantize(0.5), 8388608);
+    }
+
+    #[test]
+    fn masked_clear_keeps_protected_channels() {
+        let fmt = TargetFormat {
+            color: ColorFormat::Rgba8888,
+            depth: None,
+            stencil_bits: 0,
+        };
+        let mut t = Target::new(4, 4, fmt);
+        t.clear_color(t.bounds(), [1.0, 1.0, 1.0, 1.0], [true; 4]);
+        t.clear_color(Rect::new(1, 1, 2, 2), [0.0; 4], [false, true, false, true]);
+        assert_eq!(t.pixel(0, 0), [255, 255, 255, 255]);
+        assert_eq!(t.pixel(1, 1), [255, 0, 255, 0]);
+        assert_eq!(t.pixel(3, 3), [255, 255, 255, 255]);
+    }
+}

@@ -1,0 +1,295 @@
+//! The vertex stage: fetch any array type to f32, transform to clip space, and carry the
+//! per-vertex values the later stages interpolate.
+
+use glam::Vec4;
+
+use super::fixed;
+use super::state::RenderState;
+
+/// The component types vertex arrays can hold.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ComponentType {
+    Byte,
+    UnsignedByte,
+    Short,
+    Fixed,
+    Float,
+}
+
+impl ComponentType {
+    pub fn size(self) -> usize {
+        match self {
+            ComponentType::Byte | ComponentType::UnsignedByte => 1,
+            ComponentType::Short => 2,
+            ComponentType::Fixed | ComponentType::Float => 4,
+        }
+    }
+}
+
+/// One vertex array as the pipeline reads it: `data` starts at element 0 and is long enough
+/// for every element the draw call reads (the caller checked); `stride` is the distance in
+/// bytes between elements, never 0.
+#[derive(Clone, Copy, Debug)]
+pub struct AttribArray<'a> {
+    pub data: &'a [u8],
+    pub ty: ComponentType,
+    pub size: usize,
+    pub stride: usize,
+    /// Integer types map to [0, 1] (unsigned) or [-1, 1] (signed) as colors and normals do.
+    pub normalized: bool,
+}
+
+impl AttribArray<'_> {
+    /// The bytes an array of `count` elements with this layout needs.
+    pub fn bytes_needed(ty: ComponentType, size: usize, stride: usize, count: usize) -> usize {
+        if count == 0 {
+            0
+        } else {
+            (count - 1) * stride + size * ty.size()
+        }
+    }
+
+    /// Element `i` as four floats, missing components taken from `(0, 0, 0, 1)`. Reads
+    /// outside `data` give the default rather than panicking.
+    #[inline]
+    pub fn fetch(&self, i: usize) -> [f32; 4] {
+        let mut out = [0.0, 0.0, 0.0, 1.0];
+        let base = i * self.stride;
+        let n = self.ty.size();
+        for (c, o) in out.iter_mut().enumerate().take(self.size) {
+            let at = base + c * n;
+            let Some(b) = self.data.get(at..at + n) else {
+                return [0.0, 0.0, 0.0, 1.0];
+            };
+            *o = match self.ty {
+                ComponentType::Float => f32::from_ne_bytes([b[0], b[1], b[2], b[3]]),
+                ComponentType::Fixed => fixed::to_f32(i32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
+                ComponentType::UnsignedByte if self.normalized => b[0] as f32 / 255.0,
+                ComponentType::UnsignedByte => b[0] as f32,
+                // Signed normalization as GL 1.x defines it: (2c + 1) / (2ⁿ − 1).
+                ComponentType::Byte if self.normalized => (2.0 * (b[0] as i8) as f32 + 1.0) / 255.0,
+                ComponentType::Byte => (b[0] as i8) as f32,
+                ComponentType::Short if self.normalized => {
+                    (2.0 * i16::from_ne_bytes([b[0], b[1]]) as f32 + 1.0) / 65535.0
+                }
+                ComponentType::Short => i16::from_ne_bytes([b[0], b[1]]) as f32,
+            };
+        }
+        out
+    }
+}
+
+/// Where a vertex attribute comes from.
+#[derive(Clone, Copy, Debug)]
+pub enum AttribSource<'a> {
+    Array(AttribArray<'a>),
+    Constant([f32; 4]),
+}
+
+impl AttribSource<'_> {
+    #[inline]
+    fn fetch(&self, i: usize) -> [f32; 4] {
+        match self {
+            AttribSource::Array(a) => a.fetch(i),
+            AttribSource::Constant(c) => *c,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Primitive {
+    Points,
+    Lines,
+    LineLoop,
+    LineStrip,
+    Triangles,
+    TriangleStrip,
+    TriangleFan,
+}
+
+/// Which vertices a draw call uses, in order.
+#[derive(Clone, Copy, Debug)]
+pub enum Indices<'a> {
+    Range { first: usize, count: usize },
+    U8(&'a [u8]),
+    U16(&'a [u16]),
+    U32(&'a [u32]),
+}
+
+impl Indices<'_> {
+    pub fn len(&self) -> usize {
+        match self {
+            Indices::Range { count, .. } => *count,
+            Indices::U8(i) => i.len(),
+            Indices::U16(i) => i.len(),
+            Indices::U32(i) => i.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The vertex number at position `k` of the list.
+    #[inline]
+    pub fn get(&self, k: usize) -> usize {
+        match self {
+            Indices::Range { first, .. } => first + k,
+            Indices::U8(i) => i[k] as usize,
+            Indices::U16(i) => i[k] as usize,
+            Indices::U32(i) => i[k] as usize,
+        }
+    }
+
+    /// The smallest and largest vertex number used, or `None` for an empty list.
+    pub fn range(&self) -> Option<(usize, usize)> {
+        if self.is_empty() {
+            return None;
+        }
+        match self {
+            Indices::Range { first, count } => Some((*first, first + count - 1)),
+            _ => {
+                let (mut lo, mut hi) = (usize::MAX, 0);
+                for k in 0..self.len() {
+                    let v = self.get(k);
+                    lo = lo.min(v);
+                    hi = hi.max(v);
+                }
+                Some((lo, hi))
+            }
+        }
+    }
+}
+
+impl Primitive {
+    /// Calls `f` with the vertex numbers of every triangle the primitive assembles, in an
+    /// order that keeps strip winding consistent; the third vertex is always the provoking
+    /// one (the one whose color flat shading uses).
+    pub fn for_each_triangle(self, ix: &Indices<'_>, mut f: impl FnMut(usize, usize, usize)) {
+        let n = ix.len();
+        match self {
+            Primitive::Triangles => {
+                for t in 0..n / 3 {
+                    f(ix.get(3 * t), ix.get(3 * t + 1), ix.get(3 * t + 2));
+                }
+            }
+            Primitive::TriangleStrip => {
+                for t in 0..n.saturating_sub(2) {
+                    let (a, b) = if t % 2 == 0 { (t, t + 1) } else { (t + 1, t) };
+                    f(ix.get(a), ix.get(b), ix.get(t + 2));
+                }
+            }
+            Primitive::TriangleFan => {
+                for t in 0..n.saturating_sub(2) {
+                    f(ix.get(0), ix.get(t + 1), ix.get(t + 2));
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Everything a draw call reads. Arrays that are disabled are `Constant` sources holding the
+/// current value.
+#[derive(Clone, Copy, Debug)]
+pub struct DrawCall<'a> {
+    pub primitive: Primitive,
+    pub indices: Indices<'a>,
+    pub position: AttribArray<'a>,
+    pub color: AttribSource<'a>,
+}
+
+/// A vertex after the vertex stage, in clip space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClipVertex {
+    pub pos: Vec4,
+    pub color: Vec4,
+}
+
+impl ClipVertex {
+    /// The vertex a fraction `t` of the way from `self` to `o`, every value interpolated
+    /// linearly in clip space, as clipping requires.
+    #[inline]
+    pub fn lerp(&self, o: &ClipVertex, t: f32) -> ClipVertex {
+        ClipVertex {
+            pos: self.pos + (o.pos - self.pos) * t,
+            color: self.color + (o.color - self.color) * t,
+        }
+    }
+}
+
+/// Transformed vertices of one draw call, addressed by vertex number.
+pub struct Vertices {
+    base: usize,
+    list: Vec<ClipVertex>,
+}
+
+impl std::ops::Index<usize> for Vertices {
+    type Output = ClipVertex;
+    #[inline]
+    fn index(&self, i: usize) -> &ClipVertex {
+        &self.list[i - self.base]
+    }
+}
+
+/// Runs the vertex stage for every vertex in the draw call's index range.
+pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Vertices {
+    let Some((lo, hi)) = draw.indices.range() else {
+        return Vertices {
+            base: 0,
+            list: Vec::new(),
+        };
+    };
+    let mvp = state.projection * state.modelview;
+    let list = (lo..=hi)
+        .map(|i| {
+            let p = Vec4::from_array(draw.position.fetch(i));
+            let c = Vec4::from_array(draw.color.fetch(i)).clamp(Vec4::ZERO, Vec4::ONE);
+            ClipVertex {
+                pos: mvp * p,
+                color: c,
+            }
+        })
+        .collect();
+    Vertices { base: lo, list }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fetch_converts_every_type() {
+        let bytes: Vec<u8> = [-128i8, 127, 0].iter().map(|&b| b as u8).collect();
+        let a = AttribArray {
+            data: &bytes,
+            ty: ComponentType::Byte,
+            size: 3,
+            stride: 3,
+            normalized: true,
+        };
+        assert_eq!(a.fetch(0), [-1.0, 1.0, 1.0 / 255.0, 1.0]);
+        let fx: Vec<u8> = [0x10000i32, -0x8000].iter().flat_map(|v| v.to_ne_bytes()).collect();
+        let a = AttribArray {
+            data: &fx,
+            ty: ComponentType::Fixed,
+            size: 2,
+            stride: 8,
+            normalized: false,
+        };
+        assert_eq!(a.fetch(0), [1.0, -0.5, 0.0, 1.0]);
+        assert_eq!(a.fetch(1), [0.0, 0.0, 0.0, 1.0], "out of range reads give the default");
+    }
+
+    #[test]
+    fn strips_keep_winding_and_provoking_vertex() {
+        let mut tris = Vec::new();
+        Primitive::TriangleStrip.for_each_triangle(&Indices::Range { first: 0, count: 5 }, |a, b, c| {
+            tris.push((a, b, c))
+        });
+        assert_eq!(tris, vec![(0, 1, 2), (2, 1, 3), (2, 3, 4)]);
+        let mut fan = Vec::new();
+        Primitive::TriangleFan.for_each_triangle(&Indices::U8(&[7, 8, 9, 10]), |a, b, c| fan.push((a, b, c)));
+        assert_eq!(fan, vec![(7, 8, 9), (7, 9, 10)]);
+    }
+}
