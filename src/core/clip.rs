@@ -44,6 +44,11 @@ pub fn outcode(p: Vec4) -> u8 {
 /// Clips triangle (a, b, c) and calls `emit` with the resulting convex polygon (at least three
 /// vertices, in the original winding), or not at all when nothing is left.
 pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnce(&[ClipVertex])) {
+    // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
+    // than let NaN reach the rasterizer.
+    if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
+        return;
+    }
     let codes = [outcode(a.pos), outcode(b.pos), outcode(c.pos)];
     if codes[0] | codes[1] | codes[2] == 0 {
         emit(&[*a, *b, *c]);
@@ -76,6 +81,10 @@ pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnc
                 let (inside, outside, di, dout) = if dp >= 0.0 { (p, q, dp, dq) } else { (q, p, dq, dp) };
                 let t = di / (di - dout);
                 next[m] = inside.lerp(outside, t);
+                if plane == 6 {
+                    // Rounding can land the new vertex a hair below the plane; pin it on.
+                    next[m].pos.w = next[m].pos.w.max(W_MIN);
+                }
                 m += 1;
             }
         }

@@ -82,8 +82,10 @@ pub fn triangle(
         let p = v[i].pos;
         debug_assert!(p.w >= clip::W_MIN);
         let iw = 1.0 / p.w as f64;
-        let x = (p.x as f64 * iw) * hw + cx;
-        let y = (p.y as f64 * iw) * hh + cy;
+        // Clipping bounds |x/w| and |y/w| by 1; the clamp only removes rounding excess, and
+        // keeps a w near W_MIN from producing huge coordinates.
+        let x = (p.x as f64 * iw).clamp(-1.0, 1.0) * hw + cx;
+        let y = (p.y as f64 * iw).clamp(-1.0, 1.0) * hh + cy;
         win[i] = ((x * ONE as f64).round() as i64, (y * ONE as f64).round() as i64);
         z[i] = ((p.z as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
         inv_w[i] = iw as f32;

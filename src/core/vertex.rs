@@ -5,6 +5,7 @@ use glam::Vec4;
 
 use super::fixed;
 use super::state::RenderState;
+use super::OutOfMemory;
 
 /// The component types vertex arrays can hold.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -232,26 +233,24 @@ impl std::ops::Index<usize> for Vertices {
     }
 }
 
-/// Runs the vertex stage for every vertex in the draw call's index range.
-pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Vertices {
+/// Runs the vertex stage for every vertex in the draw call's index range. The range comes
+/// from the caller, so its allocation is fallible rather than aborting.
+pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMemory> {
+    let mut list = Vec::new();
     let Some((lo, hi)) = draw.indices.range() else {
-        return Vertices {
-            base: 0,
-            list: Vec::new(),
-        };
+        return Ok(Vertices { base: 0, list });
     };
+    list.try_reserve_exact(hi - lo + 1).map_err(|_| OutOfMemory)?;
     let mvp = state.projection * state.modelview;
-    let list = (lo..=hi)
-        .map(|i| {
-            let p = Vec4::from_array(draw.position.fetch(i));
-            let c = Vec4::from_array(draw.color.fetch(i)).clamp(Vec4::ZERO, Vec4::ONE);
-            ClipVertex {
-                pos: mvp * p,
-                color: c,
-            }
-        })
-        .collect();
-    Vertices { base: lo, list }
+    list.extend((lo..=hi).map(|i| {
+        let p = Vec4::from_array(draw.position.fetch(i));
+        let c = Vec4::from_array(draw.color.fetch(i)).clamp(Vec4::ZERO, Vec4::ONE);
+        ClipVertex {
+            pos: mvp * p,
+            color: c,
+        }
+    }));
+    Ok(Vertices { base: lo, list })
 }
 
 #[cfg(test)]

@@ -1,9 +1,14 @@
-//! A GL ES 1.1 context: the state machine behind the `gl*` entry points.
+//! A GL ES 1.1 context: the state machine behind the `gl*` entry points. State is kept in
+//! the specification's float form; [`Context::render_state`] turns it into the core's
+//! [`RenderState`] for each draw.
 
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, MutexGuard};
 
-use crate::core::{RenderState, Target, TargetFormat};
+use glam::Mat4;
 
+use crate::core::{CompareFunc, CullFace, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport, Winding};
+
+use super::arrays::ClientArrays;
 use super::tokens::*;
 use super::types::*;
 
@@ -17,9 +22,99 @@ pub trait Surface: Send + Sync {
     fn rendering_complete(&self) {}
 }
 
-/// Objects shared between the contexts of one share group (textures and buffer objects).
+/// Objects shared between the contexts of one share group (textures and buffer objects
+/// arrive with their own modules; the group already exists so sharing is decided at creation).
 #[derive(Default)]
 pub struct SharedObjects {}
+
+pub const MAX_TEXTURE_UNITS: usize = 2;
+pub const MAX_LIGHTS: usize = 8;
+pub const MAX_CLIP_PLANES: usize = 6;
+pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
+pub const MAX_PROJECTION_STACK_DEPTH: usize = 2;
+pub const MAX_TEXTURE_STACK_DEPTH: usize = 2;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MatrixMode {
+    Modelview,
+    Projection,
+    Texture,
+}
+
+/// The `glHint` targets, each FASTEST, NICEST or DONT_CARE.
+#[derive(Clone, Copy, Debug)]
+pub struct Hints {
+    pub perspective_correction: GLenum,
+    pub point_smooth: GLenum,
+    pub line_smooth: GLenum,
+    pub fog: GLenum,
+    pub generate_mipmap: GLenum,
+}
+
+/// The server-side capabilities of `glEnable`, one flag each.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Enables {
+    pub alpha_test: bool,
+    pub blend: bool,
+    pub color_logic_op: bool,
+    pub clip_plane: [bool; MAX_CLIP_PLANES],
+    pub color_material: bool,
+    pub cull_face: bool,
+    pub depth_test: bool,
+    pub dither: bool,
+    pub fog: bool,
+    pub light: [bool; MAX_LIGHTS],
+    pub lighting: bool,
+    pub line_smooth: bool,
+    pub multisample: bool,
+    pub normalize: bool,
+    pub point_smooth: bool,
+    pub point_sprite: bool,
+    pub polygon_offset_fill: bool,
+    pub rescale_normal: bool,
+    pub sample_alpha_to_coverage: bool,
+    pub sample_alpha_to_one: bool,
+    pub sample_coverage: bool,
+    pub scissor_test: bool,
+    pub stencil_test: bool,
+    pub texture_2d: [bool; MAX_TEXTURE_UNITS],
+}
+
+impl Enables {
+    /// The flag for `cap`, or `None` when `cap` is not a capability (`GL_INVALID_ENUM`).
+    /// `GL_TEXTURE_2D` is per texture unit: `unit` picks the active one.
+    pub fn flag(&mut self, cap: GLenum, unit: usize) -> Option<&mut bool> {
+        Some(match cap {
+            GL_ALPHA_TEST => &mut self.alpha_test,
+            GL_BLEND => &mut self.blend,
+            GL_COLOR_LOGIC_OP => &mut self.color_logic_op,
+            GL_COLOR_MATERIAL => &mut self.color_material,
+            GL_CULL_FACE => &mut self.cull_face,
+            GL_DEPTH_TEST => &mut self.depth_test,
+            GL_DITHER => &mut self.dither,
+            GL_FOG => &mut self.fog,
+            GL_LIGHTING => &mut self.lighting,
+            GL_LINE_SMOOTH => &mut self.line_smooth,
+            GL_MULTISAMPLE => &mut self.multisample,
+            GL_NORMALIZE => &mut self.normalize,
+            GL_POINT_SMOOTH => &mut self.point_smooth,
+            GL_POINT_SPRITE_OES => &mut self.point_sprite,
+            GL_POLYGON_OFFSET_FILL => &mut self.polygon_offset_fill,
+            GL_RESCALE_NORMAL => &mut self.rescale_normal,
+            GL_SAMPLE_ALPHA_TO_COVERAGE => &mut self.sample_alpha_to_coverage,
+            GL_SAMPLE_ALPHA_TO_ONE => &mut self.sample_alpha_to_one,
+            GL_SAMPLE_COVERAGE => &mut self.sample_coverage,
+            GL_SCISSOR_TEST => &mut self.scissor_test,
+            GL_STENCIL_TEST => &mut self.stencil_test,
+            GL_TEXTURE_2D => &mut self.texture_2d[unit],
+            c if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as GLenum).contains(&c) => {
+                &mut self.clip_plane[(c - GL_CLIP_PLANE0) as usize]
+            }
+            c if (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as GLenum).contains(&c) => &mut self.light[(c - GL_LIGHT0) as usize],
+            _ => return None,
+        })
+    }
+}
 
 pub struct Context {
     pub(super) shared: Arc<Mutex<SharedObjects>>,
@@ -28,7 +123,31 @@ pub struct Context {
     /// Set on the first `make_current`: the viewport and scissor start at the surface size.
     pub(super) initialized: bool,
     pub(super) error: GLenum,
-    pub(super) render: RenderState,
+
+    pub(super) enables: Enables,
+    pub(super) matrix_mode: MatrixMode,
+    /// Each stack's last element is its current matrix; stacks are never empty.
+    pub(super) modelview: Vec<Mat4>,
+    pub(super) projection: Vec<Mat4>,
+    pub(super) texture: [Vec<Mat4>; MAX_TEXTURE_UNITS],
+    pub(super) active_texture: usize,
+    pub(super) viewport: Viewport,
+    pub(super) depth_range: [f32; 2],
+    pub(super) scissor_box: Rect,
+    pub(super) depth_func: CompareFunc,
+    pub(super) cull_face: CullFace,
+    pub(super) front_face: Winding,
+    pub(super) shade_model: ShadeModel,
+    pub(super) color_mask: [bool; 4],
+    pub(super) depth_mask: bool,
+    pub(super) stencil_writemask: u32,
+    pub(super) clear_color: [f32; 4],
+    pub(super) clear_depth: f32,
+    pub(super) clear_stencil: i32,
+    pub(super) pack_alignment: usize,
+    pub(super) unpack_alignment: usize,
+    pub(super) hints: Hints,
+    pub(super) arrays: ClientArrays,
 }
 
 impl Context {
@@ -40,7 +159,44 @@ impl Context {
             read: None,
             initialized: false,
             error: GL_NO_ERROR,
-            render: RenderState::new(0, 0),
+            enables: Enables {
+                dither: true,
+                multisample: true,
+                ..Enables::default()
+            },
+            matrix_mode: MatrixMode::Modelview,
+            modelview: vec![Mat4::IDENTITY],
+            projection: vec![Mat4::IDENTITY],
+            texture: std::array::from_fn(|_| vec![Mat4::IDENTITY]),
+            active_texture: 0,
+            viewport: Viewport {
+                x: 0,
+                y: 0,
+                width: 0,
+                height: 0,
+            },
+            depth_range: [0.0, 1.0],
+            scissor_box: Rect::default(),
+            depth_func: CompareFunc::Less,
+            cull_face: CullFace::Back,
+            front_face: Winding::Ccw,
+            shade_model: ShadeModel::Smooth,
+            color_mask: [true; 4],
+            depth_mask: true,
+            stencil_writemask: u32::MAX,
+            clear_color: [0.0; 4],
+            clear_depth: 1.0,
+            clear_stencil: 0,
+            pack_alignment: 4,
+            unpack_alignment: 4,
+            hints: Hints {
+                perspective_correction: GL_DONT_CARE,
+                point_smooth: GL_DONT_CARE,
+                line_smooth: GL_DONT_CARE,
+                fog: GL_DONT_CARE,
+                generate_mipmap: GL_DONT_CARE,
+            },
+            arrays: ClientArrays::default(),
         }
     }
 
@@ -54,8 +210,15 @@ impl Context {
     pub fn make_current(&mut self, draw: Option<Arc<dyn Surface>>, read: Option<Arc<dyn Surface>>) {
         if !self.initialized {
             if let Some(d) = &draw {
-                let t = d.target().lock().unwrap_or_else(|e| e.into_inner());
-                self.render = RenderState::new(t.width() as i32, t.height() as i32);
+                let t = lock_target(d.as_ref());
+                let (w, h) = (t.width() as i32, t.height() as i32);
+                self.viewport = Viewport {
+                    x: 0,
+                    y: 0,
+                    width: w,
+                    height: h,
+                };
+                self.scissor_box = Rect::new(0, 0, w, h);
                 self.initialized = true;
             }
         }
@@ -73,9 +236,7 @@ impl Context {
 
     /// The format of the draw surface, if one is bound.
     pub fn draw_format(&self) -> Option<TargetFormat> {
-        let d = self.draw.as_ref()?;
-        let t = d.target().lock().unwrap_or_else(|e| e.into_inner());
-        Some(t.format())
+        self.draw.as_ref().map(|d| lock_target(d.as_ref()).format())
     }
 
     /// Records `e` unless an earlier error is still unread (the first error sticks).
@@ -88,5 +249,56 @@ impl Context {
     /// Returns and clears the recorded error.
     pub fn take_error(&mut self) -> GLenum {
         std::mem::replace(&mut self.error, GL_NO_ERROR)
+    }
+
+    /// The core's view of the current state.
+    pub fn render_state(&self) -> RenderState {
+        let e = &self.enables;
+        RenderState {
+            modelview: *self.modelview.last().expect("stack never empty"),
+            projection: *self.projection.last().expect("stack never empty"),
+            viewport: self.viewport,
+            depth_range: self.depth_range,
+            scissor: e.scissor_test.then_some(self.scissor_box),
+            cull: e.cull_face.then_some(self.cull_face),
+            front_face: self.front_face,
+            shade_model: self.shade_model,
+            depth_test: e.depth_test.then_some(self.depth_func),
+            depth_write: self.depth_mask,
+            color_mask: self.color_mask,
+        }
+    }
+}
+
+/// Locks a surface's target, recovering from a lock poisoned by a caught panic.
+pub(super) fn lock_target(s: &dyn Surface) -> MutexGuard<'_, Target> {
+    s.target().lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Parses a comparison function enum.
+pub(super) fn compare_func(func: GLenum) -> Option<CompareFunc> {
+    Some(match func {
+        GL_NEVER => CompareFunc::Never,
+        GL_LESS => CompareFunc::Less,
+        GL_EQUAL => CompareFunc::Equal,
+        GL_LEQUAL => CompareFunc::LessEqual,
+        GL_GREATER => CompareFunc::Greater,
+        GL_NOTEQUAL => CompareFunc::NotEqual,
+        GL_GEQUAL => CompareFunc::GreaterEqual,
+        GL_ALWAYS => CompareFunc::Always,
+        _ => return None,
+    })
+}
+
+pub(super) fn compare_func_enum(f: CompareFunc) -> GLenum {
+    match f {
+        CompareFunc::Never => GL_NEVER,
+        CompareFunc::Less => GL_LESS,
+        CompareFunc::Equal => GL_EQUAL,
+        CompareFunc::LessEqual => GL_LEQUAL,
+        CompareFunc::Greater => GL_GREATER,
+        CompareFunc::NotEqual => GL_NOTEQUAL,
+        CompareFunc::GreaterEqual => GL_GEQUAL,
+        CompareFunc::Always => GL_ALWAYS,
     }
 }

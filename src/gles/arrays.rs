@@ -1,0 +1,208 @@
+//! Client vertex arrays, the current vertex values, and the draw calls that read them.
+
+use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
+
+use super::context::{lock_target, Context, MAX_TEXTURE_UNITS};
+use super::ffi::client_bytes;
+use super::tokens::*;
+use super::types::*;
+
+/// One `gl*Pointer` binding: the layout as given and the client address.
+#[derive(Clone, Copy, Debug)]
+pub struct ArrayPointer {
+    pub size: i32,
+    pub ty: GLenum,
+    pub stride: i32,
+    pub ptr: usize,
+    pub enabled: bool,
+}
+
+impl ArrayPointer {
+    const fn new(size: i32) -> ArrayPointer {
+        ArrayPointer {
+            size,
+            ty: GL_FLOAT,
+            stride: 0,
+            ptr: 0,
+            enabled: false,
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct ClientArrays {
+    pub vertex: ArrayPointer,
+    pub color: ArrayPointer,
+    pub normal: ArrayPointer,
+    pub texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
+    pub point_size: ArrayPointer,
+    pub client_active_texture: usize,
+    /// The current color, used when the color array is disabled.
+    pub color_value: [f32; 4],
+}
+
+impl Default for ClientArrays {
+    fn default() -> ClientArrays {
+        ClientArrays {
+            vertex: ArrayPointer::new(4),
+            color: ArrayPointer::new(4),
+            normal: ArrayPointer::new(3),
+            texcoord: [ArrayPointer::new(4); MAX_TEXTURE_UNITS],
+            point_size: ArrayPointer::new(1),
+            client_active_texture: 0,
+            color_value: [1.0; 4],
+        }
+    }
+}
+
+/// Which array a `gl*Pointer` call sets, with the sizes and types it allows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ArrayKind {
+    Vertex,
+    Color,
+}
+
+fn component_type(ty: GLenum) -> Option<ComponentType> {
+    Some(match ty {
+        GL_BYTE => ComponentType::Byte,
+        GL_UNSIGNED_BYTE => ComponentType::UnsignedByte,
+        GL_SHORT => ComponentType::Short,
+        GL_FIXED => ComponentType::Fixed,
+        GL_FLOAT => ComponentType::Float,
+        _ => return None,
+    })
+}
+
+fn primitive(mode: GLenum) -> Option<Primitive> {
+    Some(match mode {
+        GL_POINTS => Primitive::Points,
+        GL_LINES => Primitive::Lines,
+        GL_LINE_LOOP => Primitive::LineLoop,
+        GL_LINE_STRIP => Primitive::LineStrip,
+        GL_TRIANGLES => Primitive::Triangles,
+        GL_TRIANGLE_STRIP => Primitive::TriangleStrip,
+        GL_TRIANGLE_FAN => Primitive::TriangleFan,
+        _ => return None,
+    })
+}
+
+impl Context {
+    /// `glVertexPointer` / `glColorPointer`: type errors are `GL_INVALID_ENUM`, size and
+    /// stride errors `GL_INVALID_VALUE` (ES 1.1 §2.8).
+    pub fn array_pointer(&mut self, kind: ArrayKind, size: i32, ty: GLenum, stride: i32, ptr: usize) {
+        let (sizes, types): (&[i32], &[GLenum]) = match kind {
+            ArrayKind::Vertex => (&[2, 3, 4], &[GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT]),
+            ArrayKind::Color => (&[4], &[GL_UNSIGNED_BYTE, GL_FIXED, GL_FLOAT]),
+        };
+        if !types.contains(&ty) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if !sizes.contains(&size) || stride < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let a = match kind {
+            ArrayKind::Vertex => &mut self.arrays.vertex,
+            ArrayKind::Color => &mut self.arrays.color,
+        };
+        a.size = size;
+        a.ty = ty;
+        a.stride = stride;
+        a.ptr = ptr;
+    }
+
+    pub fn client_state(&mut self, array: GLenum, on: bool) {
+        let unit = self.arrays.client_active_texture;
+        let a = match array {
+            GL_VERTEX_ARRAY => &mut self.arrays.vertex,
+            GL_COLOR_ARRAY => &mut self.arrays.color,
+            GL_NORMAL_ARRAY => &mut self.arrays.normal,
+            GL_TEXTURE_COORD_ARRAY => &mut self.arrays.texcoord[unit],
+            GL_POINT_SIZE_ARRAY_OES => &mut self.arrays.point_size,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        a.enabled = on;
+    }
+
+    pub fn color(&mut self, rgba: [f32; 4]) {
+        self.arrays.color_value = rgba;
+    }
+
+    pub fn draw_arrays(&mut self, mode: GLenum, first: i32, count: i32) {
+        let Some(prim) = primitive(mode) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        if first < 0 || count < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        self.draw(
+            prim,
+            Indices::Range {
+                first: first as usize,
+                count: count as usize,
+            },
+        );
+    }
+
+    /// `glDrawElements` with client-memory indices. The caller (the C shim) has turned the
+    /// index pointer into a slice of exactly `count` elements.
+    pub fn draw_elements(&mut self, mode: GLenum, indices: Indices<'_>) {
+        let Some(prim) = primitive(mode) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        self.draw(prim, indices);
+    }
+
+    fn draw(&mut self, primitive: Primitive, indices: Indices<'_>) {
+        let Some((_, hi)) = indices.range() else { return };
+        // Without a vertex array nothing is drawn (ES 1.1 §2.8).
+        if !self.arrays.vertex.enabled || self.arrays.vertex.ptr == 0 {
+            return;
+        }
+        let Some(surface) = self.draw.clone() else { return };
+        let Some(position) = array_view(&self.arrays.vertex, hi, false) else {
+            return self.set_error(GL_OUT_OF_MEMORY);
+        };
+        let color = if self.arrays.color.enabled && self.arrays.color.ptr != 0 {
+            match array_view(&self.arrays.color, hi, true) {
+                Some(a) => AttribSource::Array(a),
+                None => return self.set_error(GL_OUT_OF_MEMORY),
+            }
+        } else {
+            AttribSource::Constant(self.arrays.color_value)
+        };
+        let call = DrawCall {
+            primitive,
+            indices,
+            position,
+            color,
+        };
+        let state = self.render_state();
+        let mut target = lock_target(surface.as_ref());
+        if core::render(&state, &call, &mut target).is_err() {
+            drop(target);
+            self.set_error(GL_OUT_OF_MEMORY);
+        }
+    }
+}
+
+/// The client memory behind `a` for elements `0..=last`, or `None` when its size does not
+/// fit in the address space.
+fn array_view(a: &ArrayPointer, last: usize, normalized: bool) -> Option<AttribArray<'static>> {
+    let ty = component_type(a.ty)?;
+    let size = a.size as usize;
+    let stride = if a.stride == 0 { size * ty.size() } else { a.stride as usize };
+    let len = last.checked_mul(stride)?.checked_add(size * ty.size())?;
+    if a.ptr.checked_add(len).is_none() || len > isize::MAX as usize {
+        return None;
+    }
+    // SAFETY: the application promised, when it passed this pointer to gl*Pointer, that it
+    // stays valid for every element the draw calls read; `len` covers exactly those.
+    let data = unsafe { client_bytes(a.ptr, len) };
+    Some(AttribArray {
+        data,
+        ty,
+        size,
+        stride,
+        normalized,
+    })
+}

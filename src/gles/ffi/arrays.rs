@@ -1,0 +1,78 @@
+//! Vertex arrays, current values and draw calls.
+
+use crate::core::fixed::to_f32 as fx;
+use crate::core::Indices;
+use crate::gles::arrays::ArrayKind;
+use crate::gles::tokens::*;
+use crate::gles::types::*;
+
+use super::{client_bytes, with_context};
+
+#[no_mangle]
+pub extern "C" fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
+    with_context((), |c| c.array_pointer(ArrayKind::Vertex, size, ty, stride, ptr as usize))
+}
+
+#[no_mangle]
+pub extern "C" fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
+    with_context((), |c| c.array_pointer(ArrayKind::Color, size, ty, stride, ptr as usize))
+}
+
+#[no_mangle]
+pub extern "C" fn glEnableClientState(array: GLenum) {
+    with_context((), |c| c.client_state(array, true))
+}
+
+#[no_mangle]
+pub extern "C" fn glDisableClientState(array: GLenum) {
+    with_context((), |c| c.client_state(array, false))
+}
+
+#[no_mangle]
+pub extern "C" fn glColor4f(r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat) {
+    with_context((), |c| c.color([r, g, b, a]))
+}
+
+#[no_mangle]
+pub extern "C" fn glColor4x(r: GLfixed, g: GLfixed, b: GLfixed, a: GLfixed) {
+    with_context((), |c| c.color([fx(r), fx(g), fx(b), fx(a)]))
+}
+
+#[no_mangle]
+pub extern "C" fn glColor4ub(r: GLubyte, g: GLubyte, b: GLubyte, a: GLubyte) {
+    with_context((), |c| c.color([r, g, b, a].map(|v| v as f32 / 255.0)))
+}
+
+#[no_mangle]
+pub extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
+    with_context((), |c| c.draw_arrays(mode, first, count))
+}
+
+/// # Safety
+/// A non-null `indices` must point to `count` indices of type `ty`.
+#[no_mangle]
+pub unsafe extern "C" fn glDrawElements(mode: GLenum, count: GLsizei, ty: GLenum, indices: *const GLvoid) {
+    with_context((), |c| {
+        let size = match ty {
+            GL_UNSIGNED_BYTE => 1,
+            GL_UNSIGNED_SHORT => 2,
+            _ => return c.set_error(GL_INVALID_ENUM),
+        };
+        if count < 0 {
+            return c.set_error(GL_INVALID_VALUE);
+        }
+        if indices.is_null() || count == 0 {
+            // Still validate the mode, as a draw of nothing must.
+            return c.draw_elements(mode, Indices::Range { first: 0, count: 0 });
+        }
+        let n = count as usize;
+        // SAFETY: the application passes `count` indices of type `ty` at `indices`.
+        let bytes = unsafe { client_bytes(indices as usize, n * size) };
+        if size == 1 {
+            c.draw_elements(mode, Indices::U8(bytes));
+        } else {
+            let shorts: Vec<u16> = bytes.chunks_exact(2).map(|b| u16::from_ne_bytes([b[0], b[1]])).collect();
+            c.draw_elements(mode, Indices::U16(&shorts));
+        }
+    })
+}

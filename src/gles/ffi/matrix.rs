@@ -1,0 +1,112 @@
+//! The matrix stacks.
+
+use crate::core::fixed::to_f32 as fx;
+use crate::gles::types::*;
+
+use super::{read_array, with_context};
+
+#[no_mangle]
+pub extern "C" fn glMatrixMode(mode: GLenum) {
+    with_context((), |c| c.matrix_mode(mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glLoadIdentity() {
+    with_context((), |c| c.load_identity())
+}
+
+#[no_mangle]
+pub extern "C" fn glPushMatrix() {
+    with_context((), |c| c.push_matrix())
+}
+
+#[no_mangle]
+pub extern "C" fn glPopMatrix() {
+    with_context((), |c| c.pop_matrix())
+}
+
+/// # Safety
+/// A non-null `m` must point to 16 floats.
+#[no_mangle]
+pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
+    // SAFETY: the caller passes 16 floats.
+    let Some(m) = (unsafe { read_array::<GLfloat, 16>(m) }) else { return };
+    with_context((), |c| c.load_matrix(&m))
+}
+
+/// # Safety
+/// A non-null `m` must point to 16 fixed-point values.
+#[no_mangle]
+pub unsafe extern "C" fn glLoadMatrixx(m: *const GLfixed) {
+    // SAFETY: the caller passes 16 values.
+    let Some(m) = (unsafe { read_array::<GLfixed, 16>(m) }) else { return };
+    with_context((), |c| c.load_matrix(&m.map(fx)))
+}
+
+/// # Safety
+/// A non-null `m` must point to 16 floats.
+#[no_mangle]
+pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
+    // SAFETY: the caller passes 16 floats.
+    let Some(m) = (unsafe { read_array::<GLfloat, 16>(m) }) else { return };
+    with_context((), |c| c.mult_matrix(&m))
+}
+
+/// # Safety
+/// A non-null `m` must point to 16 fixed-point values.
+#[no_mangle]
+pub unsafe extern "C" fn glMultMatrixx(m: *const GLfixed) {
+    // SAFETY: the caller passes 16 values.
+    let Some(m) = (unsafe { read_array::<GLfixed, 16>(m) }) else { return };
+    with_context((), |c| c.mult_matrix(&m.map(fx)))
+}
+
+#[no_mangle]
+pub extern "C" fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context((), |c| c.translate(x, y, z))
+}
+
+#[no_mangle]
+pub extern "C" fn glTranslatex(x: GLfixed, y: GLfixed, z: GLfixed) {
+    with_context((), |c| c.translate(fx(x), fx(y), fx(z)))
+}
+
+#[no_mangle]
+pub extern "C" fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context((), |c| c.scale(x, y, z))
+}
+
+#[no_mangle]
+pub extern "C" fn glScalex(x: GLfixed, y: GLfixed, z: GLfixed) {
+    with_context((), |c| c.scale(fx(x), fx(y), fx(z)))
+}
+
+#[no_mangle]
+pub extern "C" fn glRotatef(angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context((), |c| c.rotate(angle, x, y, z))
+}
+
+#[no_mangle]
+pub extern "C" fn glRotatex(angle: GLfixed, x: GLfixed, y: GLfixed, z: GLfixed) {
+    with_context((), |c| c.rotate(fx(angle), fx(x), fx(y), fx(z)))
+}
+
+#[no_mangle]
+pub extern "C" fn glFrustumf(l: GLfloat, r: GLfloat, b: GLfloat, t: GLfloat, n: GLfloat, f: GLfloat) {
+    with_context((), |c| c.frustum(l, r, b, t, n, f))
+}
+
+#[no_mangle]
+pub extern "C" fn glFrustumx(l: GLfixed, r: GLfixed, b: GLfixed, t: GLfixed, n: GLfixed, f: GLfixed) {
+    with_context((), |c| c.frustum(fx(l), fx(r), fx(b), fx(t), fx(n), fx(f)))
+}
+
+#[no_mangle]
+pub extern "C" fn glOrthof(l: GLfloat, r: GLfloat, b: GLfloat, t: GLfloat, n: GLfloat, f: GLfloat) {
+    with_context((), |c| c.ortho(l, r, b, t, n, f))
+}
+
+#[no_mangle]
+pub extern "C" fn glOrthox(l: GLfixed, r: GLfixed, b: GLfixed, t: GLfixed, n: GLfixed, f: GLfixed) {
+    with_context((), |c| c.ortho(fx(l), fx(r), fx(b), fx(t), fx(n), fx(f)))
+}

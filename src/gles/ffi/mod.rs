@@ -1,0 +1,151 @@
+//! The `extern "C"` `gl*` entry points: thin shims that catch panics, find the current
+//! context, turn C pointers into checked slices and call a safe [`Context`] method
+//! (ARCHITECTURE decision 8). One file per state area.
+
+use std::ffi::c_void;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+use super::context::Context;
+use super::current;
+use super::tokens::GL_OUT_OF_MEMORY;
+
+mod arrays;
+mod framebuffer;
+mod matrix;
+mod state;
+
+pub use arrays::*;
+pub use framebuffer::*;
+pub use matrix::*;
+pub use state::*;
+
+/// Runs `f` on the calling thread's current context. Without one the call does nothing and
+/// returns `default`. A panic inside is caught here, never crossing into C, and reported as
+/// `GL_OUT_OF_MEMORY` (the only error GL lets an implementation raise at any time).
+pub(crate) fn with_context<R>(default: R, f: impl FnOnce(&mut Context) -> R) -> R {
+    let Some(ctx) = current::get() else {
+        return default;
+    };
+    match catch_unwind(AssertUnwindSafe(|| f(&mut current::lock(&ctx)))) {
+        Ok(r) => r,
+        Err(_) => {
+            current::lock(&ctx).set_error(GL_OUT_OF_MEMORY);
+            default
+        }
+    }
+}
+
+/// Views `len` bytes of client memory at `ptr` (a non-null address `len` bytes of which the
+/// application guarantees readable).
+///
+/// # Safety
+/// The memory must stay valid and unaliased by writes for the duration of the borrow.
+pub(crate) unsafe fn client_bytes<'a>(ptr: usize, len: usize) -> &'a [u8] {
+    if len == 0 {
+        return &[];
+    }
+    // SAFETY: forwarded to the caller's contract above.
+    unsafe { std::slice::from_raw_parts(ptr as *const u8, len) }
+}
+
+/// Reads `N` values from a C array argument, or `None` for a null pointer.
+///
+/// # Safety
+/// A non-null `p` must point to at least `N` readable values.
+pub(crate) unsafe fn read_array<T: Copy, const N: usize>(p: *const T) -> Option<[T; N]> {
+    if p.is_null() {
+        return None;
+    }
+    // SAFETY: non-null and, by the caller's contract, N readable values.
+    Some(unsafe { std::ptr::read_unaligned(p as *const [T; N]) })
+}
+
+/// Writes query results to a C array argument, ignoring a null pointer.
+///
+/// # Safety
+/// A non-null `p` must have room for every value `values` yields.
+pub(crate) unsafe fn write_values<T>(p: *mut T, values: impl Iterator<Item = T>) {
+    if p.is_null() {
+        return;
+    }
+    for (i, v) in values.enumerate() {
+        // SAFETY: by the caller's contract, there is room for this value.
+        unsafe { p.add(i).write_unaligned(v) };
+    }
+}
+
+macro_rules! proc_table {
+    ($($name:ident),* $(,)?) => {
+        /// The address of the `gl*` function called `name`, for `eglGetProcAddress`.
+        pub fn proc_address(name: &str) -> Option<*const c_void> {
+            match name {
+                $(stringify!($name) => Some($name as *const c_void),)*
+                _ => None,
+            }
+        }
+
+        /// Every `gl*` function this library exports.
+        pub const PROC_NAMES: &[&str] = &[$(stringify!($name)),*];
+    };
+}
+
+proc_table![
+    glClear,
+    glClearColor,
+    glClearColorx,
+    glClearDepthf,
+    glClearDepthx,
+    glClearStencil,
+    glColorMask,
+    glDepthMask,
+    glStencilMask,
+    glDepthFunc,
+    glDepthRangef,
+    glDepthRangex,
+    glViewport,
+    glScissor,
+    glCullFace,
+    glFrontFace,
+    glShadeModel,
+    glReadPixels,
+    glPixelStorei,
+    glFlush,
+    glFinish,
+    glEnable,
+    glDisable,
+    glIsEnabled,
+    glHint,
+    glGetError,
+    glGetString,
+    glGetBooleanv,
+    glGetIntegerv,
+    glGetFloatv,
+    glGetFixedv,
+    glMatrixMode,
+    glLoadIdentity,
+    glLoadMatrixf,
+    glLoadMatrixx,
+    glMultMatrixf,
+    glMultMatrixx,
+    glPushMatrix,
+    glPopMatrix,
+    glTranslatef,
+    glTranslatex,
+    glScalef,
+    glScalex,
+    glRotatef,
+    glRotatex,
+    glFrustumf,
+    glFrustumx,
+    glOrthof,
+    glOrthox,
+    glVertexPointer,
+    glColorPointer,
+    glEnableClientState,
+    glDisableClientState,
+    glColor4f,
+    glColor4x,
+    glColor4ub,
+    glDrawArrays,
+    glDrawElements,
+];

@@ -1,0 +1,87 @@
+//! Capabilities, hints, errors, strings, queries and synchronization.
+
+use crate::gles::get::Value;
+use crate::gles::tokens::*;
+use crate::gles::types::*;
+
+use super::{with_context, write_values};
+
+#[no_mangle]
+pub extern "C" fn glEnable(cap: GLenum) {
+    with_context((), |c| c.set_capability(cap, true))
+}
+
+#[no_mangle]
+pub extern "C" fn glDisable(cap: GLenum) {
+    with_context((), |c| c.set_capability(cap, false))
+}
+
+#[no_mangle]
+pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
+    with_context(GL_FALSE as GLboolean, |c| c.is_enabled(cap) as GLboolean)
+}
+
+#[no_mangle]
+pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
+    with_context((), |c| c.hint(target, mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glGetError() -> GLenum {
+    with_context(GL_NO_ERROR, |c| c.take_error())
+}
+
+#[no_mangle]
+pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
+    with_context(std::ptr::null(), |c| c.string(name).map_or(std::ptr::null(), |s| s.as_ptr()))
+}
+
+/// Looks `pname` up and hands the value to `write`, or records `GL_INVALID_ENUM`.
+fn get(pname: GLenum, write: impl FnOnce(&Value)) {
+    with_context((), |c| match c.state_value(pname) {
+        Some(v) => write(&v),
+        None => c.set_error(GL_INVALID_ENUM),
+    })
+}
+
+/// # Safety
+/// `params` must have room for every value of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetBooleanv(pname: GLenum, params: *mut GLboolean) {
+    // SAFETY: the caller provides room for pname's values.
+    get(pname, |v| unsafe { write_values(params, v.as_booleans()) })
+}
+
+/// # Safety
+/// `params` must have room for every value of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetIntegerv(pname: GLenum, params: *mut GLint) {
+    // SAFETY: the caller provides room for pname's values.
+    get(pname, |v| unsafe { write_values(params, v.as_integers()) })
+}
+
+/// # Safety
+/// `params` must have room for every value of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetFloatv(pname: GLenum, params: *mut GLfloat) {
+    // SAFETY: the caller provides room for pname's values.
+    get(pname, |v| unsafe { write_values(params, v.as_floats()) })
+}
+
+/// # Safety
+/// `params` must have room for every value of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetFixedv(pname: GLenum, params: *mut GLfixed) {
+    // SAFETY: the caller provides room for pname's values.
+    get(pname, |v| unsafe { write_values(params, v.as_fixed()) })
+}
+
+/// Every command so far has already been executed when it returned, so a flush has
+/// nothing left to start.
+#[no_mangle]
+pub extern "C" fn glFlush() {}
+
+#[no_mangle]
+pub extern "C" fn glFinish() {
+    with_context((), |c| c.finish())
+}

@@ -1,0 +1,127 @@
+//! Whole-framebuffer operations: clears and pixel read-back.
+
+use crate::core::{ColorFormat, Target};
+
+use super::context::{lock_target, Context};
+use super::tokens::*;
+use super::types::*;
+
+/// How `glReadPixels` lays out its result in client memory.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelLayout {
+    pub format: GLenum,
+    pub ty: GLenum,
+    pub bytes_per_pixel: usize,
+    /// Bytes from one row to the next, after `GL_PACK_ALIGNMENT`.
+    pub row_stride: usize,
+    /// Bytes the whole read touches.
+    pub len: usize,
+}
+
+impl Context {
+    pub fn clear(&mut self, mask: GLbitfield) {
+        if mask & !(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT) != 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let Some(surface) = self.draw.clone() else { return };
+        let mut t = lock_target(surface.as_ref());
+        let rect = self.render_state().pixel_bounds(&t);
+        if mask & GL_COLOR_BUFFER_BIT != 0 {
+            t.clear_color(rect, self.clear_color, self.color_mask);
+        }
+        if mask & GL_DEPTH_BUFFER_BIT != 0 && self.depth_mask {
+            t.clear_depth(rect, self.clear_depth as f64);
+        }
+        if mask & GL_STENCIL_BUFFER_BIT != 0 {
+            t.clear_stencil(rect, self.clear_stencil as u32, self.stencil_writemask);
+        }
+    }
+
+    /// The implementation-chosen read format and type (`OES_read_format`) for the read surface.
+    pub fn implementation_read_format(&self) -> (GLenum, GLenum) {
+        let format = self.read.as_ref().map(|r| lock_target(r.as_ref()).format().color);
+        match format {
+            Some(ColorFormat::Rgb565) => (GL_RGB, GL_UNSIGNED_SHORT_5_6_5),
+            Some(ColorFormat::Rgb888) => (GL_RGB, GL_UNSIGNED_BYTE),
+            Some(ColorFormat::Rgba8888) | None => (GL_RGBA, GL_UNSIGNED_BYTE),
+        }
+    }
+
+    /// Validates a `glReadPixels` request and says how much client memory it writes. Unknown
+    /// enums are `GL_INVALID_ENUM`; known ones in a combination other than RGBA/UNSIGNED_BYTE
+    /// and the implementation read format are `GL_INVALID_OPERATION`.
+    pub fn read_pixels_layout(&self, w: i32, h: i32, format: GLenum, ty: GLenum) -> Result<PixelLayout, GLenum> {
+        let formats = [GL_ALPHA, GL_RGB, GL_RGBA, GL_LUMINANCE, GL_LUMINANCE_ALPHA];
+        let types = [
+            GL_UNSIGNED_BYTE,
+            GL_UNSIGNED_SHORT_5_6_5,
+            GL_UNSIGNED_SHORT_4_4_4_4,
+            GL_UNSIGNED_SHORT_5_5_5_1,
+        ];
+        if !formats.contains(&format) || !types.contains(&ty) {
+            return Err(GL_INVALID_ENUM);
+        }
+        if w < 0 || h < 0 {
+            return Err(GL_INVALID_VALUE);
+        }
+        if (format, ty) != (GL_RGBA, GL_UNSIGNED_BYTE) && (format, ty) != self.implementation_read_format() {
+            return Err(GL_INVALID_OPERATION);
+        }
+        let bpp = match (format, ty) {
+            (GL_RGBA, GL_UNSIGNED_BYTE) => 4,
+            (GL_RGB, GL_UNSIGNED_BYTE) => 3,
+            _ => 2,
+        };
+        let (w, h) = (w as usize, h as usize);
+        let a = self.pack_alignment;
+        let row = w.checked_mul(bpp).ok_or(GL_OUT_OF_MEMORY)?;
+        let row_stride = row.checked_add(a - 1).ok_or(GL_OUT_OF_MEMORY)? / a * a;
+        let len = if h == 0 || w == 0 {
+            0
+        } else {
+            row_stride.checked_mul(h - 1).and_then(|v| v.checked_add(row)).ok_or(GL_OUT_OF_MEMORY)?
+        };
+        Ok(PixelLayout {
+            format,
+            ty,
+            bytes_per_pixel: bpp,
+            row_stride,
+            len,
+        })
+    }
+
+    /// Reads the rectangle at (x, y) of the read surface into `out` (at least `layout.len`
+    /// bytes). Pixels outside the surface are left as they were in `out`.
+    pub fn read_pixels(&mut self, x: i32, y: i32, w: i32, h: i32, layout: PixelLayout, out: &mut [u8]) {
+        let Some(surface) = self.read.clone() else { return };
+        let t = lock_target(surface.as_ref());
+        read_rect(&t, x, y, w, h, layout, out);
+    }
+}
+
+fn read_rect(t: &Target, x: i32, y: i32, w: i32, h: i32, layout: PixelLayout, out: &mut [u8]) {
+    let (tw, th) = (t.width() as i64, t.height() as i64);
+    let bpp = layout.bytes_per_pixel;
+    for row in 0..h as i64 {
+        let sy = y as i64 + row;
+        if sy < 0 || sy >= th {
+            continue;
+        }
+        let x0 = (x as i64).max(0);
+        let x1 = (x as i64 + w as i64).min(tw);
+        for sx in x0..x1 {
+            let px = t.pixel(sx as u32, sy as u32);
+            let at = row as usize * layout.row_stride + (sx - x as i64) as usize * bpp;
+            let dst = &mut out[at..at + bpp];
+            match (layout.format, layout.ty) {
+                (GL_RGBA, GL_UNSIGNED_BYTE) => dst.copy_from_slice(&px),
+                (GL_RGB, GL_UNSIGNED_BYTE) => dst.copy_from_slice(&px[..3]),
+                _ => {
+                    let q = |v: u8, bits: u32| (v as u32 * ((1 << bits) - 1) + 127) / 255;
+                    let v = (q(px[0], 5) << 11) | (q(px[1], 6) << 5) | q(px[2], 5);
+                    dst.copy_from_slice(&(v as u16).to_ne_bytes());
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,135 @@
+//! The matrix stacks and the operations on the current matrix.
+
+use glam::{Mat4, Vec3};
+
+use super::context::{Context, MatrixMode, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH, MAX_TEXTURE_STACK_DEPTH};
+use super::tokens::*;
+use super::types::*;
+
+impl Context {
+    fn stack(&mut self) -> (&mut Vec<Mat4>, usize) {
+        match self.matrix_mode {
+            MatrixMode::Modelview => (&mut self.modelview, MAX_MODELVIEW_STACK_DEPTH),
+            MatrixMode::Projection => (&mut self.projection, MAX_PROJECTION_STACK_DEPTH),
+            MatrixMode::Texture => (&mut self.texture[self.active_texture], MAX_TEXTURE_STACK_DEPTH),
+        }
+    }
+
+    fn current(&mut self) -> &mut Mat4 {
+        self.stack().0.last_mut().expect("stack never empty")
+    }
+
+    pub fn matrix_mode(&mut self, mode: GLenum) {
+        self.matrix_mode = match mode {
+            GL_MODELVIEW => MatrixMode::Modelview,
+            GL_PROJECTION => MatrixMode::Projection,
+            GL_TEXTURE => MatrixMode::Texture,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+    }
+
+    pub fn push_matrix(&mut self) {
+        let (stack, max) = self.stack();
+        if stack.len() >= max {
+            return self.set_error(GL_STACK_OVERFLOW);
+        }
+        let top = *stack.last().expect("stack never empty");
+        stack.push(top);
+    }
+
+    pub fn pop_matrix(&mut self) {
+        let (stack, _) = self.stack();
+        if stack.len() <= 1 {
+            return self.set_error(GL_STACK_UNDERFLOW);
+        }
+        stack.pop();
+    }
+
+    pub fn load_identity(&mut self) {
+        *self.current() = Mat4::IDENTITY;
+    }
+
+    /// `m` is column-major, as GL passes matrices.
+    pub fn load_matrix(&mut self, m: &[f32; 16]) {
+        *self.current() = Mat4::from_cols_array(m);
+    }
+
+    pub fn mult_matrix(&mut self, m: &[f32; 16]) {
+        let c = self.current();
+        *c = *c * Mat4::from_cols_array(m);
+    }
+
+    pub fn translate(&mut self, x: f32, y: f32, z: f32) {
+        let c = self.current();
+        *c = *c * Mat4::from_translation(Vec3::new(x, y, z));
+    }
+
+    pub fn scale(&mut self, x: f32, y: f32, z: f32) {
+        let c = self.current();
+        *c = *c * Mat4::from_scale(Vec3::new(x, y, z));
+    }
+
+    /// Rotation by `angle` degrees about (x, y, z); a zero axis leaves the matrix unchanged
+    /// rather than filling it with NaN.
+    pub fn rotate(&mut self, angle: f32, x: f32, y: f32, z: f32) {
+        let axis = Vec3::new(x, y, z);
+        let len = axis.length();
+        if !(len > 0.0) || !len.is_finite() {
+            return;
+        }
+        let c = self.current();
+        *c = *c * Mat4::from_axis_angle(axis / len, angle.to_radians());
+    }
+
+    pub fn frustum(&mut self, l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) {
+        if n <= 0.0 || f <= 0.0 || l == r || b == t || n == f {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let m = Mat4::from_cols_array(&[
+            2.0 * n / (r - l),
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            2.0 * n / (t - b),
+            0.0,
+            0.0,
+            (r + l) / (r - l),
+            (t + b) / (t - b),
+            -(f + n) / (f - n),
+            -1.0,
+            0.0,
+            0.0,
+            -2.0 * f * n / (f - n),
+            0.0,
+        ]);
+        let c = self.current();
+        *c = *c * m;
+    }
+
+    pub fn ortho(&mut self, l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) {
+        if l == r || b == t || n == f {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let m = Mat4::from_cols_array(&[
+            2.0 / (r - l),
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            2.0 / (t - b),
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            -2.0 / (f - n),
+            0.0,
+            -(r + l) / (r - l),
+            -(t + b) / (t - b),
+            -(f + n) / (f - n),
+            1.0,
+        ]);
+        let c = self.current();
+        *c = *c * m;
+    }
+}
