@@ -33,8 +33,8 @@ pub fn outcode(p: Vec4) -> u8 {
     let d = distances(p);
     let mut code = 0;
     for (i, &v) in d.iter().enumerate() {
-        // `!(v >= 0)` also treats NaN as outside, so NaN positions are dropped.
-        if !(v >= 0.0) {
+        // NaN compares false, so it counts as outside too.
+        if v.is_nan() || v < 0.0 {
             code |= 1 << i;
         }
     }
@@ -78,7 +78,11 @@ pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnc
             if (dp >= 0.0) != (dq >= 0.0) {
                 // Always interpolate from the inside vertex so that an edge shared by two
                 // triangles is cut at the same point whichever triangle clips it.
-                let (inside, outside, di, dout) = if dp >= 0.0 { (p, q, dp, dq) } else { (q, p, dq, dp) };
+                let (inside, outside, di, dout) = if dp >= 0.0 {
+                    (p, q, dp, dq)
+                } else {
+                    (q, p, dq, dp)
+                };
                 let t = di / (di - dout);
                 next[m] = inside.lerp(outside, t);
                 if plane == 6 {
@@ -111,17 +115,32 @@ mod tests {
     #[test]
     fn inside_passes_through_and_outside_is_dropped() {
         let mut got = 0;
-        triangle(&v(0., 0., 0., 1.), &v(0.5, 0., 0., 1.), &v(0., 0.5, 0., 1.), |p| got = p.len());
+        triangle(
+            &v(0., 0., 0., 1.),
+            &v(0.5, 0., 0., 1.),
+            &v(0., 0.5, 0., 1.),
+            |p| got = p.len(),
+        );
         assert_eq!(got, 3);
         let mut called = false;
-        triangle(&v(2., 0., 0., 1.), &v(3., 0., 0., 1.), &v(2., 1., 0., 1.), |_| called = true);
+        triangle(
+            &v(2., 0., 0., 1.),
+            &v(3., 0., 0., 1.),
+            &v(2., 1., 0., 1.),
+            |_| called = true,
+        );
         assert!(!called);
     }
 
     #[test]
     fn behind_the_eye_is_clipped_before_the_divide() {
         let mut out = Vec::new();
-        triangle(&v(0., 0., 0., 1.), &v(0., 0., 0., -1.), &v(0.5, 0.5, 0., 1.), |p| out = p.to_vec());
+        triangle(
+            &v(0., 0., 0., 1.),
+            &v(0., 0., 0., -1.),
+            &v(0.5, 0.5, 0., 1.),
+            |p| out = p.to_vec(),
+        );
         assert!(out.len() >= 3);
         for p in &out {
             assert!(p.pos.w >= W_MIN, "{:?}", p.pos);
@@ -132,9 +151,19 @@ mod tests {
     #[test]
     fn screen_covering_triangle_stays_within_the_vertex_limit() {
         let mut n = 0;
-        triangle(&v(-10., -10., 0., 1.), &v(30., -10., 0., 1.), &v(-10., 30., 0., 1.), |p| n = p.len());
+        triangle(
+            &v(-10., -10., 0., 1.),
+            &v(30., -10., 0., 1.),
+            &v(-10., 30., 0., 1.),
+            |p| n = p.len(),
+        );
         assert_eq!(n, 4, "clipped to the viewport square");
-        triangle(&v(-100., -10., -5., 1.), &v(100., -10., 5., 1.), &v(0., 100., 0.5, 1.), |p| n = p.len());
+        triangle(
+            &v(-100., -10., -5., 1.),
+            &v(100., -10., 5., 1.),
+            &v(0., 100., 0.5, 1.),
+            |p| n = p.len(),
+        );
         assert!((3..=MAX_POLY).contains(&n));
     }
 }

@@ -62,7 +62,9 @@ impl FragmentKey {
             } else {
                 let w = 1.0 / (b[0] * t.inv_w[0] + b[1] * t.inv_w[1] + b[2] * t.inv_w[2]);
                 for (c, out) in rgba.iter_mut().enumerate() {
-                    *out = (b[0] * t.color_w[0][c] + b[1] * t.color_w[1][c] + b[2] * t.color_w[2][c]) * w;
+                    *out =
+                        (b[0] * t.color_w[0][c] + b[1] * t.color_w[1][c] + b[2] * t.color_w[2][c])
+                            * w;
                 }
             }
             let word = self.color.encode(rgba);

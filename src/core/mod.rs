@@ -27,7 +27,11 @@ pub const MAX_VIEWPORT_DIM: u32 = 8192;
 pub struct OutOfMemory;
 
 /// Draws `draw` with `state` into `target`, returning when every pixel is written.
-pub fn render(state: &RenderState, draw: &DrawCall<'_>, target: &mut Target) -> Result<(), OutOfMemory> {
+pub fn render(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    target: &mut Target,
+) -> Result<(), OutOfMemory> {
     let bounds = state.pixel_bounds(target);
     if bounds.is_empty() {
         return Ok(());
@@ -94,7 +98,10 @@ mod tests {
     }
 
     fn count(t: &Target, rgba: [u8; 4]) -> usize {
-        t.color().iter().filter(|&&w| w.to_le_bytes() == rgba).count()
+        t.color()
+            .iter()
+            .filter(|&&w| w.to_le_bytes() == rgba)
+            .count()
     }
 
     #[test]
@@ -103,7 +110,9 @@ mod tests {
         let s = pixel_state(16, 16);
         // Two triangles sharing the diagonal; colors add up in the red channel only if a
         // pixel is hit twice, which the depth test (EQUAL after the first write) catches.
-        let quad = [2., 3., 0., 12., 3., 0., 12., 11., 0., 2., 3., 0., 12., 11., 0., 2., 11., 0.];
+        let quad = [
+            2., 3., 0., 12., 3., 0., 12., 11., 0., 2., 3., 0., 12., 11., 0., 2., 11., 0.,
+        ];
         draw(&s, &mut t, &quad, [1., 0., 0., 1.], Primitive::Triangles);
         assert_eq!(count(&t, [255, 0, 0, 255]), 10 * 8);
         for y in 3..11 {
@@ -128,7 +137,15 @@ mod tests {
         for i in 0..12 {
             let mut t = target(32, 32);
             let tri = [
-                center[0], center[1], 0., ring[i][0], ring[i][1], 0., ring[i + 1][0], ring[i + 1][1], 0.,
+                center[0],
+                center[1],
+                0.,
+                ring[i][0],
+                ring[i][1],
+                0.,
+                ring[i + 1][0],
+                ring[i + 1][1],
+                0.,
             ];
             draw(&s, &mut t, &tri, [1., 1., 1., 1.], Primitive::Triangles);
             for (h, w) in hits.iter_mut().zip(t.color()) {
@@ -155,7 +172,11 @@ mod tests {
         for order in [[0.5f32, -0.5], [-0.5, 0.5]] {
             let mut t = target(8, 8);
             for z in order {
-                let color = if z < 0.0 { [0., 1., 0., 1.] } else { [0., 0., 1., 1.] };
+                let color = if z < 0.0 {
+                    [0., 1., 0., 1.]
+                } else {
+                    [0., 0., 1., 1.]
+                };
                 // Ortho maps object z to window depth 0.5 - z/2... nearer is larger z here.
                 draw(&s, &mut t, &tri(z), color, Primitive::Triangles);
             }
@@ -174,6 +195,10 @@ mod tests {
         draw(&s, &mut t, &tri, [1., 1., 1., 1.], Primitive::Triangles);
         let z = [0., 0., 0., 0., 0., 0., 0., 0., 0.];
         draw(&s, &mut t, &z, [1., 1., 1., 1.], Primitive::Triangles);
-        assert_eq!(count(&t, [0, 0, 0, 0]), 64, "nothing in front of the eye was drawn");
+        assert_eq!(
+            count(&t, [0, 0, 0, 0]),
+            64,
+            "nothing in front of the eye was drawn"
+        );
     }
 }

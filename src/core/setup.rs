@@ -86,7 +86,10 @@ pub fn triangle(
         // keeps a w near W_MIN from producing huge coordinates.
         let x = (p.x as f64 * iw).clamp(-1.0, 1.0) * hw + cx;
         let y = (p.y as f64 * iw).clamp(-1.0, 1.0) * hh + cy;
-        win[i] = ((x * ONE as f64).round() as i64, (y * ONE as f64).round() as i64);
+        win[i] = (
+            (x * ONE as f64).round() as i64,
+            (y * ONE as f64).round() as i64,
+        );
         z[i] = ((p.z as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
         inv_w[i] = iw as f32;
     }
@@ -96,10 +99,7 @@ pub fn triangle(
     let min_y = win.iter().map(|p| p.1).min()?;
     let max_y = win.iter().map(|p| p.1).max()?;
     let to_px = |lo: i64, hi: i64| -> (i64, i64) {
-        (
-            (lo - HALF).div_euclid(ONE),
-            (hi - HALF).div_euclid(ONE) + 1,
-        )
+        ((lo - HALF).div_euclid(ONE), (hi - HALF).div_euclid(ONE) + 1)
     };
     let (px0, px1) = to_px(min_x, max_x);
     let (py0, py1) = to_px(min_y, max_y);

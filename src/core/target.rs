@@ -48,7 +48,7 @@ impl ColorFormat {
             bytes[i] = match b[i] {
                 0 => 255,
                 8 => bytes[i],
-                n => expand_to_8(((bytes[i] as u32 * ((1 << n) - 1) + 127) / 255) as u32, n),
+                n => expand_to_8((bytes[i] as u32 * ((1 << n) - 1) + 127) / 255, n),
             };
         }
         u32::from_le_bytes(bytes)
@@ -226,7 +226,8 @@ impl Target {
             if keep == 0 {
                 row.fill(word);
             } else {
-                row.iter_mut().for_each(|p| *p = (*p & keep) | (word & !keep));
+                row.iter_mut()
+                    .for_each(|p| *p = (*p & keep) | (word & !keep));
             }
         });
     }

@@ -240,7 +240,8 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     let Some((lo, hi)) = draw.indices.range() else {
         return Ok(Vertices { base: 0, list });
     };
-    list.try_reserve_exact(hi - lo + 1).map_err(|_| OutOfMemory)?;
+    list.try_reserve_exact(hi - lo + 1)
+        .map_err(|_| OutOfMemory)?;
     let mvp = state.projection * state.modelview;
     list.extend((lo..=hi).map(|i| {
         let p = Vec4::from_array(draw.position.fetch(i));
@@ -268,7 +269,10 @@ mod tests {
             normalized: true,
         };
         assert_eq!(a.fetch(0), [-1.0, 1.0, 1.0 / 255.0, 1.0]);
-        let fx: Vec<u8> = [0x10000i32, -0x8000].iter().flat_map(|v| v.to_ne_bytes()).collect();
+        let fx: Vec<u8> = [0x10000i32, -0x8000]
+            .iter()
+            .flat_map(|v| v.to_ne_bytes())
+            .collect();
         let a = AttribArray {
             data: &fx,
             ty: ComponentType::Fixed,
@@ -277,18 +281,24 @@ mod tests {
             normalized: false,
         };
         assert_eq!(a.fetch(0), [1.0, -0.5, 0.0, 1.0]);
-        assert_eq!(a.fetch(1), [0.0, 0.0, 0.0, 1.0], "out of range reads give the default");
+        assert_eq!(
+            a.fetch(1),
+            [0.0, 0.0, 0.0, 1.0],
+            "out of range reads give the default"
+        );
     }
 
     #[test]
     fn strips_keep_winding_and_provoking_vertex() {
         let mut tris = Vec::new();
-        Primitive::TriangleStrip.for_each_triangle(&Indices::Range { first: 0, count: 5 }, |a, b, c| {
-            tris.push((a, b, c))
-        });
+        Primitive::TriangleStrip
+            .for_each_triangle(&Indices::Range { first: 0, count: 5 }, |a, b, c| {
+                tris.push((a, b, c))
+            });
         assert_eq!(tris, vec![(0, 1, 2), (2, 1, 3), (2, 3, 4)]);
         let mut fan = Vec::new();
-        Primitive::TriangleFan.for_each_triangle(&Indices::U8(&[7, 8, 9, 10]), |a, b, c| fan.push((a, b, c)));
+        Primitive::TriangleFan
+            .for_each_triangle(&Indices::U8(&[7, 8, 9, 10]), |a, b, c| fan.push((a, b, c)));
         assert_eq!(fan, vec![(7, 8, 9), (7, 9, 10)]);
     }
 }

@@ -89,7 +89,14 @@ fn primitive(mode: GLenum) -> Option<Primitive> {
 impl Context {
     /// `glVertexPointer` / `glColorPointer`: type errors are `GL_INVALID_ENUM`, size and
     /// stride errors `GL_INVALID_VALUE` (ES 1.1 §2.8).
-    pub fn array_pointer(&mut self, kind: ArrayKind, size: i32, ty: GLenum, stride: i32, ptr: usize) {
+    pub fn array_pointer(
+        &mut self,
+        kind: ArrayKind,
+        size: i32,
+        ty: GLenum,
+        stride: i32,
+        ptr: usize,
+    ) {
         let (sizes, types): (&[i32], &[GLenum]) = match kind {
             ArrayKind::Vertex => (&[2, 3, 4], &[GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT]),
             ArrayKind::Color => (&[4], &[GL_UNSIGNED_BYTE, GL_FIXED, GL_FLOAT]),
@@ -153,12 +160,16 @@ impl Context {
     }
 
     fn draw(&mut self, primitive: Primitive, indices: Indices<'_>) {
-        let Some((_, hi)) = indices.range() else { return };
+        let Some((_, hi)) = indices.range() else {
+            return;
+        };
         // Without a vertex array nothing is drawn (ES 1.1 §2.8).
         if !self.arrays.vertex.enabled || self.arrays.vertex.ptr == 0 {
             return;
         }
-        let Some(surface) = self.draw.clone() else { return };
+        let Some(surface) = self.draw.clone() else {
+            return;
+        };
         let Some(position) = array_view(&self.arrays.vertex, hi, false) else {
             return self.set_error(GL_OUT_OF_MEMORY);
         };
@@ -190,7 +201,11 @@ impl Context {
 fn array_view(a: &ArrayPointer, last: usize, normalized: bool) -> Option<AttribArray<'static>> {
     let ty = component_type(a.ty)?;
     let size = a.size as usize;
-    let stride = if a.stride == 0 { size * ty.size() } else { a.stride as usize };
+    let stride = if a.stride == 0 {
+        size * ty.size()
+    } else {
+        a.stride as usize
+    };
     let len = last.checked_mul(stride)?.checked_add(size * ty.size())?;
     if a.ptr.checked_add(len).is_none() || len > isize::MAX as usize {
         return None;

@@ -6,7 +6,9 @@ use std::sync::{Arc, Mutex, MutexGuard};
 
 use glam::Mat4;
 
-use crate::core::{CompareFunc, CullFace, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport, Winding};
+use crate::core::{
+    CompareFunc, CullFace, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport, Winding,
+};
 
 use super::arrays::ClientArrays;
 use super::tokens::*;
@@ -110,7 +112,9 @@ impl Enables {
             c if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as GLenum).contains(&c) => {
                 &mut self.clip_plane[(c - GL_CLIP_PLANE0) as usize]
             }
-            c if (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as GLenum).contains(&c) => &mut self.light[(c - GL_LIGHT0) as usize],
+            c if (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as GLenum).contains(&c) => {
+                &mut self.light[(c - GL_LIGHT0) as usize]
+            }
             _ => return None,
         })
     }

@@ -23,7 +23,9 @@ impl Context {
         if mask & !(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT) != 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let Some(surface) = self.draw.clone() else { return };
+        let Some(surface) = self.draw.clone() else {
+            return;
+        };
         let mut t = lock_target(surface.as_ref());
         let rect = self.render_state().pixel_bounds(&t);
         if mask & GL_COLOR_BUFFER_BIT != 0 {
@@ -39,7 +41,10 @@ impl Context {
 
     /// The implementation-chosen read format and type (`OES_read_format`) for the read surface.
     pub fn implementation_read_format(&self) -> (GLenum, GLenum) {
-        let format = self.read.as_ref().map(|r| lock_target(r.as_ref()).format().color);
+        let format = self
+            .read
+            .as_ref()
+            .map(|r| lock_target(r.as_ref()).format().color);
         match format {
             Some(ColorFormat::Rgb565) => (GL_RGB, GL_UNSIGNED_SHORT_5_6_5),
             Some(ColorFormat::Rgb888) => (GL_RGB, GL_UNSIGNED_BYTE),
@@ -50,7 +55,13 @@ impl Context {
     /// Validates a `glReadPixels` request and says how much client memory it writes. Unknown
     /// enums are `GL_INVALID_ENUM`; known ones in a combination other than RGBA/UNSIGNED_BYTE
     /// and the implementation read format are `GL_INVALID_OPERATION`.
-    pub fn read_pixels_layout(&self, w: i32, h: i32, format: GLenum, ty: GLenum) -> Result<PixelLayout, GLenum> {
+    pub fn read_pixels_layout(
+        &self,
+        w: i32,
+        h: i32,
+        format: GLenum,
+        ty: GLenum,
+    ) -> Result<PixelLayout, GLenum> {
         let formats = [GL_ALPHA, GL_RGB, GL_RGBA, GL_LUMINANCE, GL_LUMINANCE_ALPHA];
         let types = [
             GL_UNSIGNED_BYTE,
@@ -64,7 +75,9 @@ impl Context {
         if w < 0 || h < 0 {
             return Err(GL_INVALID_VALUE);
         }
-        if (format, ty) != (GL_RGBA, GL_UNSIGNED_BYTE) && (format, ty) != self.implementation_read_format() {
+        if (format, ty) != (GL_RGBA, GL_UNSIGNED_BYTE)
+            && (format, ty) != self.implementation_read_format()
+        {
             return Err(GL_INVALID_OPERATION);
         }
         let bpp = match (format, ty) {
@@ -79,7 +92,10 @@ impl Context {
         let len = if h == 0 || w == 0 {
             0
         } else {
-            row_stride.checked_mul(h - 1).and_then(|v| v.checked_add(row)).ok_or(GL_OUT_OF_MEMORY)?
+            row_stride
+                .checked_mul(h - 1)
+                .and_then(|v| v.checked_add(row))
+                .ok_or(GL_OUT_OF_MEMORY)?
         };
         Ok(PixelLayout {
             format,
@@ -92,8 +108,18 @@ impl Context {
 
     /// Reads the rectangle at (x, y) of the read surface into `out` (at least `layout.len`
     /// bytes). Pixels outside the surface are left as they were in `out`.
-    pub fn read_pixels(&mut self, x: i32, y: i32, w: i32, h: i32, layout: PixelLayout, out: &mut [u8]) {
-        let Some(surface) = self.read.clone() else { return };
+    pub fn read_pixels(
+        &mut self,
+        x: i32,
+        y: i32,
+        w: i32,
+        h: i32,
+        layout: PixelLayout,
+        out: &mut [u8],
+    ) {
+        let Some(surface) = self.read.clone() else {
+            return;
+        };
         let t = lock_target(surface.as_ref());
         read_rect(&t, x, y, w, h, layout, out);
     }

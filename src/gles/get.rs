@@ -3,7 +3,7 @@
 //! Every queryable value is produced once, in its natural type, by [`Context::state_value`];
 //! the four getters only convert, with the specification's rules (ES 1.1 §6.1.2).
 
-use crate::core::{fixed, SUBPIXEL_BITS, MAX_VIEWPORT_DIM};
+use crate::core::{fixed, MAX_VIEWPORT_DIM, SUBPIXEL_BITS};
 
 use super::context::*;
 use super::tokens::*;
@@ -47,13 +47,24 @@ impl Value {
         Value::ints(&[v])
     }
     fn floats(v: &[f32]) -> Value {
-        Value::new(Kind::Float, &v.iter().map(|&x| x as f64).collect::<Vec<_>>())
+        Value::new(
+            Kind::Float,
+            &v.iter().map(|&x| x as f64).collect::<Vec<_>>(),
+        )
     }
     fn norm(v: &[f32]) -> Value {
-        Value::new(Kind::Normalized, &v.iter().map(|&x| x as f64).collect::<Vec<_>>())
+        Value::new(
+            Kind::Normalized,
+            &v.iter().map(|&x| x as f64).collect::<Vec<_>>(),
+        )
     }
     fn bools(v: &[bool]) -> Value {
-        Value::new(Kind::Bool, &v.iter().map(|&x| f64::from(u8::from(x))).collect::<Vec<_>>())
+        Value::new(
+            Kind::Bool,
+            &v.iter()
+                .map(|&x| f64::from(u8::from(x)))
+                .collect::<Vec<_>>(),
+        )
     }
 
     pub fn values(&self) -> &[f64] {
@@ -61,7 +72,13 @@ impl Value {
     }
 
     pub fn as_booleans(&self) -> impl Iterator<Item = GLboolean> + '_ {
-        self.values().iter().map(|&v| if v != 0.0 { GL_TRUE as GLboolean } else { GL_FALSE as GLboolean })
+        self.values().iter().map(|&v| {
+            if v != 0.0 {
+                GL_TRUE as GLboolean
+            } else {
+                GL_FALSE as GLboolean
+            }
+        })
     }
 
     pub fn as_integers(&self) -> impl Iterator<Item = GLint> + '_ {
@@ -88,7 +105,8 @@ impl Value {
 pub const VENDOR: &[u8] = b"gles-cm project\0";
 pub const RENDERER: &[u8] = b"gles-cm software rasterizer\0";
 /// "OpenGL ES-CM 1.1", a space, then the implementation's own version (ES 1.1 §6.1.5).
-pub const VERSION: &[u8] = concat!("OpenGL ES-CM 1.1 gles-cm-", env!("CARGO_PKG_VERSION"), "\0").as_bytes();
+pub const VERSION: &[u8] =
+    concat!("OpenGL ES-CM 1.1 gles-cm-", env!("CARGO_PKG_VERSION"), "\0").as_bytes();
 /// Exactly the extensions that are implemented, space-separated.
 pub const EXTENSIONS: &[u8] = b"GL_OES_read_format\0";
 
@@ -116,7 +134,14 @@ impl Context {
         }
         let bits = self.draw_format().map(|f| {
             let c = f.color.bits();
-            [c[0], c[1], c[2], c[3], f.depth.map_or(0, |d| d.bits()), f.stencil_bits]
+            [
+                c[0],
+                c[1],
+                c[2],
+                c[3],
+                f.depth.map_or(0, |d| d.bits()),
+                f.stencil_bits,
+            ]
         });
         let bits = bits.unwrap_or([0; 6]);
         let vp = self.viewport;
@@ -124,7 +149,9 @@ impl Context {
         let a = &self.arrays;
         let matrix = |m: &glam::Mat4| Value::floats(&m.to_cols_array());
         Some(match pname {
-            GL_VIEWPORT => Value::ints(&[vp.x as i64, vp.y as i64, vp.width as i64, vp.height as i64]),
+            GL_VIEWPORT => {
+                Value::ints(&[vp.x as i64, vp.y as i64, vp.width as i64, vp.height as i64])
+            }
             GL_SCISSOR_BOX => Value::ints(&[
                 sb.x0 as i64,
                 sb.y0 as i64,
@@ -169,7 +196,9 @@ impl Context {
             GL_MAX_TEXTURE_UNITS => Value::int(MAX_TEXTURE_UNITS as i64),
             GL_MAX_LIGHTS => Value::int(MAX_LIGHTS as i64),
             GL_MAX_CLIP_PLANES => Value::int(MAX_CLIP_PLANES as i64),
-            GL_MAX_VIEWPORT_DIMS => Value::ints(&[MAX_VIEWPORT_DIM as i64, MAX_VIEWPORT_DIM as i64]),
+            GL_MAX_VIEWPORT_DIMS => {
+                Value::ints(&[MAX_VIEWPORT_DIM as i64, MAX_VIEWPORT_DIM as i64])
+            }
             GL_SUBPIXEL_BITS => Value::int(SUBPIXEL_BITS as i64),
             GL_RED_BITS => Value::int(bits[0] as i64),
             GL_GREEN_BITS => Value::int(bits[1] as i64),
@@ -184,8 +213,12 @@ impl Context {
             GL_LINE_SMOOTH_HINT => Value::int(self.hints.line_smooth as i64),
             GL_FOG_HINT => Value::int(self.hints.fog as i64),
             GL_GENERATE_MIPMAP_HINT => Value::int(self.hints.generate_mipmap as i64),
-            GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES => Value::int(self.implementation_read_format().0 as i64),
-            GL_IMPLEMENTATION_COLOR_READ_TYPE_OES => Value::int(self.implementation_read_format().1 as i64),
+            GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES => {
+                Value::int(self.implementation_read_format().0 as i64)
+            }
+            GL_IMPLEMENTATION_COLOR_READ_TYPE_OES => {
+                Value::int(self.implementation_read_format().1 as i64)
+            }
             GL_CURRENT_COLOR => Value::norm(&a.color_value),
             GL_VERTEX_ARRAY => Value::bools(&[a.vertex.enabled]),
             GL_VERTEX_ARRAY_SIZE => Value::int(a.vertex.size as i64),

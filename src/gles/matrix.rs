@@ -2,7 +2,10 @@
 
 use glam::{Mat4, Vec3};
 
-use super::context::{Context, MatrixMode, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH, MAX_TEXTURE_STACK_DEPTH};
+use super::context::{
+    Context, MatrixMode, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH,
+    MAX_TEXTURE_STACK_DEPTH,
+};
 use super::tokens::*;
 use super::types::*;
 
@@ -11,7 +14,10 @@ impl Context {
         match self.matrix_mode {
             MatrixMode::Modelview => (&mut self.modelview, MAX_MODELVIEW_STACK_DEPTH),
             MatrixMode::Projection => (&mut self.projection, MAX_PROJECTION_STACK_DEPTH),
-            MatrixMode::Texture => (&mut self.texture[self.active_texture], MAX_TEXTURE_STACK_DEPTH),
+            MatrixMode::Texture => (
+                &mut self.texture[self.active_texture],
+                MAX_TEXTURE_STACK_DEPTH,
+            ),
         }
     }
 
@@ -56,17 +62,17 @@ impl Context {
 
     pub fn mult_matrix(&mut self, m: &[f32; 16]) {
         let c = self.current();
-        *c = *c * Mat4::from_cols_array(m);
+        *c *= Mat4::from_cols_array(m);
     }
 
     pub fn translate(&mut self, x: f32, y: f32, z: f32) {
         let c = self.current();
-        *c = *c * Mat4::from_translation(Vec3::new(x, y, z));
+        *c *= Mat4::from_translation(Vec3::new(x, y, z));
     }
 
     pub fn scale(&mut self, x: f32, y: f32, z: f32) {
         let c = self.current();
-        *c = *c * Mat4::from_scale(Vec3::new(x, y, z));
+        *c *= Mat4::from_scale(Vec3::new(x, y, z));
     }
 
     /// Rotation by `angle` degrees about (x, y, z); a zero axis leaves the matrix unchanged
@@ -74,11 +80,11 @@ impl Context {
     pub fn rotate(&mut self, angle: f32, x: f32, y: f32, z: f32) {
         let axis = Vec3::new(x, y, z);
         let len = axis.length();
-        if !(len > 0.0) || !len.is_finite() {
+        if len.is_nan() || len <= 0.0 || !len.is_finite() {
             return;
         }
         let c = self.current();
-        *c = *c * Mat4::from_axis_angle(axis / len, angle.to_radians());
+        *c *= Mat4::from_axis_angle(axis / len, angle.to_radians());
     }
 
     pub fn frustum(&mut self, l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) {
@@ -104,7 +110,7 @@ impl Context {
             0.0,
         ]);
         let c = self.current();
-        *c = *c * m;
+        *c *= m;
     }
 
     pub fn ortho(&mut self, l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) {
@@ -130,6 +136,6 @@ impl Context {
             1.0,
         ]);
         let c = self.current();
-        *c = *c * m;
+        *c *= m;
     }
 }

@@ -10,12 +10,16 @@ use super::{client_bytes, with_context};
 
 #[no_mangle]
 pub extern "C" fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
-    with_context((), |c| c.array_pointer(ArrayKind::Vertex, size, ty, stride, ptr as usize))
+    with_context((), |c| {
+        c.array_pointer(ArrayKind::Vertex, size, ty, stride, ptr as usize)
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
-    with_context((), |c| c.array_pointer(ArrayKind::Color, size, ty, stride, ptr as usize))
+    with_context((), |c| {
+        c.array_pointer(ArrayKind::Color, size, ty, stride, ptr as usize)
+    })
 }
 
 #[no_mangle]
@@ -51,7 +55,12 @@ pub extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
 /// # Safety
 /// A non-null `indices` must point to `count` indices of type `ty`.
 #[no_mangle]
-pub unsafe extern "C" fn glDrawElements(mode: GLenum, count: GLsizei, ty: GLenum, indices: *const GLvoid) {
+pub unsafe extern "C" fn glDrawElements(
+    mode: GLenum,
+    count: GLsizei,
+    ty: GLenum,
+    indices: *const GLvoid,
+) {
     with_context((), |c| {
         let size = match ty {
             GL_UNSIGNED_BYTE => 1,
@@ -71,7 +80,10 @@ pub unsafe extern "C" fn glDrawElements(mode: GLenum, count: GLsizei, ty: GLenum
         if size == 1 {
             c.draw_elements(mode, Indices::U8(bytes));
         } else {
-            let shorts: Vec<u16> = bytes.chunks_exact(2).map(|b| u16::from_ne_bytes([b[0], b[1]])).collect();
+            let shorts: Vec<u16> = bytes
+                .chunks_exact(2)
+                .map(|b| u16::from_ne_bytes([b[0], b[1]]))
+                .collect();
             c.draw_elements(mode, Indices::U16(&shorts));
         }
     })

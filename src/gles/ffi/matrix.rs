@@ -30,7 +30,9 @@ pub extern "C" fn glPopMatrix() {
 #[no_mangle]
 pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
     // SAFETY: the caller passes 16 floats.
-    let Some(m) = (unsafe { read_array::<GLfloat, 16>(m) }) else { return };
+    let Some(m) = (unsafe { read_array::<GLfloat, 16>(m) }) else {
+        return;
+    };
     with_context((), |c| c.load_matrix(&m))
 }
 
@@ -39,7 +41,9 @@ pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
 #[no_mangle]
 pub unsafe extern "C" fn glLoadMatrixx(m: *const GLfixed) {
     // SAFETY: the caller passes 16 values.
-    let Some(m) = (unsafe { read_array::<GLfixed, 16>(m) }) else { return };
+    let Some(m) = (unsafe { read_array::<GLfixed, 16>(m) }) else {
+        return;
+    };
     with_context((), |c| c.load_matrix(&m.map(fx)))
 }
 
@@ -48,7 +52,9 @@ pub unsafe extern "C" fn glLoadMatrixx(m: *const GLfixed) {
 #[no_mangle]
 pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
     // SAFETY: the caller passes 16 floats.
-    let Some(m) = (unsafe { read_array::<GLfloat, 16>(m) }) else { return };
+    let Some(m) = (unsafe { read_array::<GLfloat, 16>(m) }) else {
+        return;
+    };
     with_context((), |c| c.mult_matrix(&m))
 }
 
@@ -57,7 +63,9 @@ pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
 #[no_mangle]
 pub unsafe extern "C" fn glMultMatrixx(m: *const GLfixed) {
     // SAFETY: the caller passes 16 values.
-    let Some(m) = (unsafe { read_array::<GLfixed, 16>(m) }) else { return };
+    let Some(m) = (unsafe { read_array::<GLfixed, 16>(m) }) else {
+        return;
+    };
     with_context((), |c| c.mult_matrix(&m.map(fx)))
 }
 
@@ -92,12 +100,26 @@ pub extern "C" fn glRotatex(angle: GLfixed, x: GLfixed, y: GLfixed, z: GLfixed) 
 }
 
 #[no_mangle]
-pub extern "C" fn glFrustumf(l: GLfloat, r: GLfloat, b: GLfloat, t: GLfloat, n: GLfloat, f: GLfloat) {
+pub extern "C" fn glFrustumf(
+    l: GLfloat,
+    r: GLfloat,
+    b: GLfloat,
+    t: GLfloat,
+    n: GLfloat,
+    f: GLfloat,
+) {
     with_context((), |c| c.frustum(l, r, b, t, n, f))
 }
 
 #[no_mangle]
-pub extern "C" fn glFrustumx(l: GLfixed, r: GLfixed, b: GLfixed, t: GLfixed, n: GLfixed, f: GLfixed) {
+pub extern "C" fn glFrustumx(
+    l: GLfixed,
+    r: GLfixed,
+    b: GLfixed,
+    t: GLfixed,
+    n: GLfixed,
+    f: GLfixed,
+) {
     with_context((), |c| c.frustum(fx(l), fx(r), fx(b), fx(t), fx(n), fx(f)))
 }
 

@@ -33,7 +33,9 @@ pub extern "C" fn glGetError() -> GLenum {
 
 #[no_mangle]
 pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
-    with_context(std::ptr::null(), |c| c.string(name).map_or(std::ptr::null(), |s| s.as_ptr()))
+    with_context(std::ptr::null(), |c| {
+        c.string(name).map_or(std::ptr::null(), |s| s.as_ptr())
+    })
 }
 
 /// Looks `pname` up and hands the value to `write`, or records `GL_INVALID_ENUM`.
