@@ -12,3 +12,6 @@ pub mod tokens;
 pub mod types;
 
 pub use context::{Context, Surface};
+
+#[cfg(test)]
+mod tests;
