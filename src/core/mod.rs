@@ -7,6 +7,7 @@ pub mod clip;
 pub mod fixed;
 pub mod fragment;
 pub mod raster;
+pub mod reference;
 pub mod setup;
 pub mod state;
 pub mod target;
@@ -200,5 +201,69 @@ mod tests {
             64,
             "nothing in front of the eye was drawn"
         );
+    }
+
+    /// A small deterministic generator so the scene is the same on every run.
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> f32 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (self.0 >> 40) as f32 / (1u64 << 24) as f32
+        }
+    }
+
+    #[test]
+    fn fast_path_matches_the_reference_on_random_perspective_triangles() {
+        let mut rng = Lcg(7);
+        let mut s = RenderState::new(96, 64);
+        s.projection = Mat4::perspective_rh_gl(1.2, 1.5, 0.5, 20.0);
+        s.depth_test = Some(CompareFunc::LessEqual);
+        let mut fast = target(96, 64);
+        let mut slow = target(96, 64);
+        for _ in 0..60 {
+            let mut pos = Vec::new();
+            let mut col = Vec::new();
+            for _ in 0..3 {
+                pos.extend([
+                    rng.next() * 8.0 - 4.0,
+                    rng.next() * 6.0 - 3.0,
+                    -1.0 - rng.next() * 10.0,
+                ]);
+                col.extend([rng.next(), rng.next(), rng.next(), 1.0]);
+            }
+            let pb: Vec<u8> = pos.iter().flat_map(|v| v.to_ne_bytes()).collect();
+            let cb: Vec<u8> = col.iter().flat_map(|v| v.to_ne_bytes()).collect();
+            let call = DrawCall {
+                primitive: Primitive::Triangles,
+                indices: Indices::Range { first: 0, count: 3 },
+                position: AttribArray {
+                    data: &pb,
+                    ty: ComponentType::Float,
+                    size: 3,
+                    stride: 12,
+                    normalized: false,
+                },
+                color: AttribSource::Array(AttribArray {
+                    data: &cb,
+                    ty: ComponentType::Float,
+                    size: 4,
+                    stride: 16,
+                    normalized: false,
+                }),
+            };
+            render(&s, &call, &mut fast).unwrap();
+            reference::render(&s, &call, &mut slow);
+        }
+        let e = reference::compare(&fast, &slow);
+        // Snapping to 1/256 pixel moves edges by at most 1/512 pixel, so only pixels whose
+        // centers lie that close to an edge may change coverage; colors differ by f32
+        // rounding (at most one step). Those bounds give the tolerances.
+        eprintln!("fast vs reference: {e:?}");
+        assert!(e.over_one < 0.01, "{e:?}");
+        assert!(e.mean < 0.5, "{e:?}");
+        assert!(e.psnr > 35.0, "{e:?}");
     }
 }

@@ -89,7 +89,7 @@ pub enum AttribSource<'a> {
 
 impl AttribSource<'_> {
     #[inline]
-    fn fetch(&self, i: usize) -> [f32; 4] {
+    pub fn fetch(&self, i: usize) -> [f32; 4] {
         match self {
             AttribSource::Array(a) => a.fetch(i),
             AttribSource::Constant(c) => *c,

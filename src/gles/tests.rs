@@ -32,7 +32,10 @@ fn context(w: u32, h: u32, color: ColorFormat) -> (Context, Arc<Memory>) {
 }
 
 fn int(c: &mut Context, pname: u32) -> Vec<i32> {
-    c.state_value(pname).expect("known pname").as_integers().collect()
+    c.state_value(pname)
+        .expect("known pname")
+        .as_integers()
+        .collect()
 }
 
 #[test]
@@ -121,7 +124,9 @@ fn read_pixels_honours_pack_alignment_and_formats() {
     let (mut c, _) = context(3, 2, ColorFormat::Rgb565);
     c.clear_color([1.0, 0.0, 1.0, 1.0]);
     c.clear(GL_COLOR_BUFFER_BIT);
-    let layout = c.read_pixels_layout(3, 2, GL_RGB, GL_UNSIGNED_SHORT_5_6_5).unwrap();
+    let layout = c
+        .read_pixels_layout(3, 2, GL_RGB, GL_UNSIGNED_SHORT_5_6_5)
+        .unwrap();
     assert_eq!((layout.row_stride, layout.len), (8, 14));
     let mut out = vec![0xAAu8; 16];
     c.read_pixels(0, 0, 3, 2, layout, &mut out);

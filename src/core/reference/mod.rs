@@ -1,0 +1,164 @@
+//! The reference renderer: plain, slow f64 code that follows the specification literally,
+//! fed the same [`RenderState`] and [`DrawCall`] as the fast pipeline. It shares nothing
+//! with the fast path but the input types, so tests and benchmarks can measure the fast
+//! path's error against it (ARCHITECTURE decision 6).
+//!
+//! Literal means: vertices transformed in f64, clipped in homogeneous space, window
+//! coordinates *not* snapped, coverage sampled at pixel centers with a top-left rule on the
+//! exact edge functions, attributes interpolated perspective-correctly per pixel, depth
+//! interpolated linearly in window space and quantized with `round(z · (2ⁿ − 1))`.
+
+use glam::DVec4;
+
+use super::state::{CullFace, RenderState, ShadeModel, Winding};
+use super::target::{keep_mask, Target};
+use super::vertex::DrawCall;
+
+mod compare;
+pub use compare::{compare, ErrorStats};
+
+#[derive(Clone, Copy, Debug)]
+struct Vtx {
+    pos: DVec4,
+    color: DVec4,
+}
+
+fn lerp(a: &Vtx, b: &Vtx, t: f64) -> Vtx {
+    Vtx {
+        pos: a.pos + (b.pos - a.pos) * t,
+        color: a.color + (b.color - a.color) * t,
+    }
+}
+
+/// Clips a polygon against −w ≤ x, y, z ≤ w and w > 0, one plane at a time.
+fn clip(poly: Vec<Vtx>) -> Vec<Vtx> {
+    let planes: [fn(DVec4) -> f64; 7] = [
+        |p| p.w + p.x,
+        |p| p.w - p.x,
+        |p| p.w + p.y,
+        |p| p.w - p.y,
+        |p| p.w + p.z,
+        |p| p.w - p.z,
+        |p| p.w - 1e-300,
+    ];
+    let mut poly = poly;
+    for d in planes {
+        let mut out = Vec::with_capacity(poly.len() + 1);
+        for i in 0..poly.len() {
+            let (a, b) = (&poly[i], &poly[(i + 1) % poly.len()]);
+            let (da, db) = (d(a.pos), d(b.pos));
+            if da >= 0.0 {
+                out.push(*a);
+            }
+            if (da >= 0.0) != (db >= 0.0) {
+                out.push(lerp(a, b, da / (da - db)));
+            }
+        }
+        poly = out;
+        if poly.len() < 3 {
+            return Vec::new();
+        }
+    }
+    poly
+}
+
+/// Renders `draw` into `target` the literal way.
+pub fn render(state: &RenderState, draw: &DrawCall<'_>, target: &mut Target) {
+    let mvp = state.projection.as_dmat4() * state.modelview.as_dmat4();
+    let fetch = |i: usize| Vtx {
+        pos: mvp * DVec4::from_array(draw.position.fetch(i).map(f64::from)),
+        color: DVec4::from_array(draw.color.fetch(i).map(f64::from)).clamp(DVec4::ZERO, DVec4::ONE),
+    };
+    draw.primitive.for_each_triangle(&draw.indices, |a, b, c| {
+        let provoking = fetch(c);
+        let poly = clip(vec![fetch(a), fetch(b), provoking]);
+        for i in 1..poly.len().saturating_sub(1) {
+            triangle(
+                state,
+                [poly[0], poly[i], poly[i + 1]],
+                provoking.color,
+                target,
+            );
+        }
+    });
+}
+
+fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Target) {
+    let vp = state.viewport;
+    let [n, f] = state.depth_range.map(f64::from);
+    let win: Vec<(f64, f64, f64, f64)> = v
+        .iter()
+        .map(|v| {
+            let ndc = v.pos / v.pos.w;
+            (
+                (ndc.x + 1.0) * vp.width as f64 / 2.0 + vp.x as f64,
+                (ndc.y + 1.0) * vp.height as f64 / 2.0 + vp.y as f64,
+                ndc.z * (f - n) / 2.0 + (f + n) / 2.0,
+                1.0 / v.pos.w,
+            )
+        })
+        .collect();
+    let edge = |a: usize, b: usize, x: f64, y: f64| {
+        (win[b].0 - win[a].0) * (y - win[a].1) - (win[b].1 - win[a].1) * (x - win[a].0)
+    };
+    let area = edge(0, 1, win[2].0, win[2].1);
+    if area == 0.0 || !area.is_finite() {
+        return;
+    }
+    let front = (area > 0.0) == (state.front_face == Winding::Ccw);
+    match state.cull {
+        Some(CullFace::FrontAndBack) => return,
+        Some(CullFace::Front) if front => return,
+        Some(CullFace::Back) if !front => return,
+        _ => {}
+    }
+    let sign = area.signum();
+    // Top-left ownership of pixels exactly on an edge, for the counter-clockwise orientation.
+    let owns = |a: usize, b: usize| {
+        let (dx, dy) = ((win[b].0 - win[a].0) * sign, (win[b].1 - win[a].1) * sign);
+        dy < 0.0 || (dy == 0.0 && dx < 0.0)
+    };
+    let bounds = state.pixel_bounds(target);
+    let width = target.width() as usize;
+    let format = target.format();
+    let keep = keep_mask(state.color_mask);
+    let (colors, depths, _) = target.buffers_mut();
+    for y in bounds.y0..bounds.y1 {
+        for x in bounds.x0..bounds.x1 {
+            let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+            let e = [
+                edge(1, 2, px, py) * sign,
+                edge(2, 0, px, py) * sign,
+                edge(0, 1, px, py) * sign,
+            ];
+            let pairs = [(1, 2), (2, 0), (0, 1)];
+            let inside =
+                (0..3).all(|i| e[i] > 0.0 || (e[i] == 0.0 && owns(pairs[i].0, pairs[i].1)));
+            if !inside {
+                continue;
+            }
+            let b = e.map(|v| v / (area * sign));
+            let at = y as usize * width + x as usize;
+            if let (Some(func), Some(df)) = (state.depth_test, format.depth) {
+                let z = df.quantize(b[0] * win[0].2 + b[1] * win[1].2 + b[2] * win[2].2);
+                if !func.test(z, depths[at]) {
+                    continue;
+                }
+                if state.depth_write {
+                    depths[at] = z;
+                }
+            }
+            let color = if state.shade_model == ShadeModel::Flat {
+                flat_color
+            } else {
+                let q = b[0] * win[0].3 + b[1] * win[1].3 + b[2] * win[2].3;
+                (v[0].color * (b[0] * win[0].3)
+                    + v[1].color * (b[1] * win[1].3)
+                    + v[2].color * (b[2] * win[2].3))
+                    / q
+            };
+            let word = format.color.encode(color.as_vec4().to_array());
+            colors[at] = (colors[at] & keep) | (word & !keep);
+        }
+    }
+}
