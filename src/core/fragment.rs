@@ -3,11 +3,11 @@
 use super::raster::Span;
 use super::setup::Triangle;
 use super::state::{CompareFunc, RenderState};
-use super::target::{keep_mask, ColorFormat, Target, TargetFormat};
+use super::target::{keep_mask, BandMut, ColorFormat, DepthFormat, TargetFormat};
 
 /// What the fragment stage does for the current state, decided once per draw call so the
 /// per-pixel loop tests nothing that is off.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FragmentKey {
     /// The depth test, present only when enabled and the target has depth.
     depth_test: Option<CompareFunc>,
@@ -15,6 +15,7 @@ pub struct FragmentKey {
     /// Stored bits the color mask protects; all ones means color is not written at all.
     keep: u32,
     color: ColorFormat,
+    depth_format: Option<DepthFormat>,
 }
 
 impl FragmentKey {
@@ -27,15 +28,15 @@ impl FragmentKey {
             depth_write: depth_test.is_some() && state.depth_write,
             keep: keep_mask(state.color_mask),
             color: format.color,
+            depth_format: format.depth,
         }
     }
 
-    /// Shades the pixels of `span`, which lies inside the target and the triangle.
-    pub fn shade(&self, t: &Triangle, span: Span, target: &mut Target) {
-        let width = target.width() as usize;
-        let depth_format = target.format().depth;
-        let (colors, depths, _) = target.buffers_mut();
-        let row = span.y as usize * width;
+    /// Shades the pixels of `span`, which lies inside the band and the triangle.
+    pub fn shade(&self, t: &Triangle, span: Span, band: &mut BandMut<'_>) {
+        let depth_format = self.depth_format;
+        let (colors, depths) = (&mut *band.color, &mut *band.depth);
+        let row = (span.y - band.y0) as usize * band.width;
         let ry = (span.y - t.origin.1) as i64;
         let inv_area = 1.0 / t.area as f64;
         for x in span.x0..span.x1 {

@@ -3,6 +3,7 @@
 //! [`DrawCall`] and hand it to [`render`], which runs
 //! vertex → clip → setup → raster → fragment into a [`Target`].
 
+pub mod bin;
 pub mod clip;
 pub mod fixed;
 pub mod fragment;
@@ -13,6 +14,7 @@ pub mod state;
 pub mod target;
 pub mod vertex;
 
+pub use bin::Frame;
 pub use state::{CompareFunc, CullFace, RenderState, ShadeModel, Viewport, Winding};
 pub use target::{ColorFormat, DepthFormat, Rect, Target, TargetFormat};
 pub use vertex::{AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
@@ -27,18 +29,19 @@ pub const MAX_VIEWPORT_DIM: u32 = 8192;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OutOfMemory;
 
-/// Draws `draw` with `state` into `target`, returning when every pixel is written.
-pub fn render(
+/// Transforms, clips and sets up `draw` with `state`, recording its primitives in `frame`
+/// (for a target of `frame`'s size and format) for a later [`Frame::flush`].
+pub fn record(
     state: &RenderState,
     draw: &DrawCall<'_>,
-    target: &mut Target,
+    frame: &mut Frame,
 ) -> Result<(), OutOfMemory> {
-    let bounds = state.pixel_bounds(target);
+    let bounds = state.pixel_bounds(frame.bounds());
     if bounds.is_empty() {
         return Ok(());
     }
     let vertices = vertex::run(state, draw)?;
-    let fragment = fragment::FragmentKey::new(state, target.format());
+    let key = frame.key(fragment::FragmentKey::new(state, frame.format()));
     draw.primitive.for_each_triangle(&draw.indices, |a, b, c| {
         let (a, b, c) = (&vertices[a], &vertices[b], &vertices[c]);
         clip::triangle(a, b, c, |poly| {
@@ -46,11 +49,23 @@ pub fn render(
             for i in 1..poly.len() - 1 {
                 let tri = [&poly[0], &poly[i], &poly[i + 1]];
                 if let Some(t) = setup::triangle(state, tri, c, bounds) {
-                    raster::triangle(&t, |span| fragment.shade(&t, span, target));
+                    frame.triangle(t, key);
                 }
             }
         });
     });
+    Ok(())
+}
+
+/// Draws `draw` with `state` into `target` and returns when every pixel is written.
+pub fn render(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    target: &mut Target,
+) -> Result<(), OutOfMemory> {
+    let mut frame = Frame::new(target.width(), target.height(), target.format());
+    record(state, draw, &mut frame)?;
+    frame.flush(target, bin::thread_count());
     Ok(())
 }
 
@@ -265,5 +280,65 @@ mod tests {
         assert!(e.over_one < 0.01, "{e:?}");
         assert!(e.mean < 0.5, "{e:?}");
         assert!(e.psnr > 35.0, "{e:?}");
+    }
+
+    #[test]
+    fn pixels_do_not_depend_on_the_thread_count() {
+        let mut rng = Lcg(99);
+        let mut s = RenderState::new(80, 70);
+        s.projection = Mat4::orthographic_rh_gl(0.0, 80.0, 0.0, 70.0, -1.0, 1.0);
+        s.depth_test = Some(CompareFunc::Less);
+        let mut pos = Vec::new();
+        let mut col = Vec::new();
+        for _ in 0..300 {
+            pos.extend([
+                rng.next() * 90.0 - 5.0,
+                rng.next() * 80.0 - 5.0,
+                rng.next() * 2.0 - 1.0,
+            ]);
+            col.extend([rng.next(), rng.next(), rng.next(), 1.0]);
+        }
+        let pb: Vec<u8> = pos.iter().flat_map(|v| v.to_ne_bytes()).collect();
+        let cb: Vec<u8> = col.iter().flat_map(|v| v.to_ne_bytes()).collect();
+        let call = DrawCall {
+            primitive: Primitive::Triangles,
+            indices: Indices::Range {
+                first: 0,
+                count: 300,
+            },
+            position: AttribArray {
+                data: &pb,
+                ty: ComponentType::Float,
+                size: 3,
+                stride: 12,
+                normalized: false,
+            },
+            color: AttribSource::Array(AttribArray {
+                data: &cb,
+                ty: ComponentType::Float,
+                size: 4,
+                stride: 16,
+                normalized: false,
+            }),
+        };
+        let images: Vec<Target> = [1, 2, 3, 8]
+            .iter()
+            .map(|&threads| {
+                let mut t = target(80, 70);
+                let mut frame = Frame::new(80, 70, t.format());
+                frame.clear_color(t.bounds(), 0x11223344, 0);
+                record(&s, &call, &mut frame).unwrap();
+                frame.flush(&mut t, threads);
+                t
+            })
+            .collect();
+        for t in &images[1..] {
+            assert_eq!(t.color(), images[0].color());
+            assert_eq!(t.depth(), images[0].depth());
+        }
+        assert!(
+            images[0].color().iter().any(|&w| w != 0x11223344),
+            "something was drawn"
+        );
     }
 }

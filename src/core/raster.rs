@@ -11,9 +11,11 @@ pub struct Span {
     pub x1: i32,
 }
 
-/// Calls `emit` for every run of pixels whose centers `t` covers under the top-left rule.
-pub fn triangle(t: &Triangle, mut emit: impl FnMut(Span)) {
-    let Rect { x0, y0, x1, y1 } = t.bbox;
+/// Calls `emit` for every run of pixels on rows `rows` whose centers `t` covers under the
+/// top-left rule.
+pub fn triangle(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span)) {
+    let Rect { x0, x1, .. } = t.bbox;
+    let (y0, y1) = (t.bbox.y0.max(rows.start), t.bbox.y1.min(rows.end));
     let (ox, oy) = t.origin;
     for y in y0..y1 {
         let ry = (y - oy) as i64;

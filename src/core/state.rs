@@ -4,7 +4,7 @@
 
 use glam::Mat4;
 
-use super::target::{ColorMask, Rect, Target};
+use super::target::{ColorMask, Rect};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CompareFunc {
@@ -104,9 +104,8 @@ impl RenderState {
         }
     }
 
-    /// The pixels a draw may touch in `target`: the target intersected with the scissor box.
-    pub fn pixel_bounds(&self, target: &Target) -> Rect {
-        let b = target.bounds();
+    /// The pixels a draw may touch in a target with `bounds`: those inside the scissor box.
+    pub fn pixel_bounds(&self, b: Rect) -> Rect {
         match self.scissor {
             Some(s) => b.intersect(s),
             None => b,

@@ -155,6 +155,68 @@ pub struct Target {
 /// Channel write mask for color clears and fragment writes.
 pub type ColorMask = [bool; 4];
 
+/// Rows `y0 .. y0 + rows` of a target, borrowed mutably: the unit one worker thread owns.
+pub struct BandMut<'a> {
+    pub y0: i32,
+    pub rows: i32,
+    pub width: usize,
+    pub color: &'a mut [u32],
+    /// Empty when the target has no depth buffer.
+    pub depth: &'a mut [u32],
+    /// Empty when the target has no stencil buffer.
+    pub stencil: &'a mut [u8],
+}
+
+impl BandMut<'_> {
+    /// The rows of `rect` (already within the target) that fall in this band, as index
+    /// ranges into the band's buffers.
+    pub fn rows_of(&self, rect: Rect) -> impl Iterator<Item = std::ops::Range<usize>> + '_ {
+        let y0 = rect.y0.max(self.y0);
+        let y1 = rect.y1.min(self.y0 + self.rows);
+        let (x0, x1) = (rect.x0 as usize, rect.x1 as usize);
+        (y0..y1).filter(move |_| x0 < x1).map(move |y| {
+            let start = (y - self.y0) as usize * self.width;
+            start + x0..start + x1
+        })
+    }
+
+    /// Fills `rect` with the color word `word`, keeping the bits in `keep`.
+    pub fn clear_color(&mut self, rect: Rect, word: u32, keep: u32) {
+        let rows: Vec<_> = self.rows_of(rect).collect();
+        for r in rows {
+            let row = &mut self.color[r];
+            if keep == 0 {
+                row.fill(word);
+            } else {
+                row.iter_mut()
+                    .for_each(|p| *p = (*p & keep) | (word & !keep));
+            }
+        }
+    }
+
+    pub fn clear_depth(&mut self, rect: Rect, value: u32) {
+        if self.depth.is_empty() {
+            return;
+        }
+        let rows: Vec<_> = self.rows_of(rect).collect();
+        for r in rows {
+            self.depth[r].fill(value);
+        }
+    }
+
+    pub fn clear_stencil(&mut self, rect: Rect, value: u8, mask: u8) {
+        if self.stencil.is_empty() {
+            return;
+        }
+        let rows: Vec<_> = self.rows_of(rect).collect();
+        for r in rows {
+            self.stencil[r]
+                .iter_mut()
+                .for_each(|s| *s = (*s & !mask) | (value & mask));
+        }
+    }
+}
+
 impl Target {
     /// A target with undefined-but-deterministic contents (zeros; depth at its maximum).
     /// Callers check sizes first: the buffers are allocated here.
@@ -216,44 +278,68 @@ impl Target {
         (&mut self.color, &mut self.depth, &mut self.stencil)
     }
 
+    /// The whole target as one band.
+    pub fn as_band(&mut self) -> BandMut<'_> {
+        BandMut {
+            y0: 0,
+            rows: self.height as i32,
+            width: self.width as usize,
+            color: &mut self.color,
+            depth: &mut self.depth,
+            stencil: &mut self.stencil,
+        }
+    }
+
+    /// Splits the target into bands of `rows` rows (the last may be shorter), bottom first.
+    pub fn bands_mut(&mut self, rows: u32) -> Vec<BandMut<'_>> {
+        let width = self.width as usize;
+        let per = width * rows as usize;
+        let count = (self.height as usize).div_ceil(rows.max(1) as usize);
+        let (mut color, mut depth, mut stencil) = (
+            &mut self.color[..],
+            &mut self.depth[..],
+            &mut self.stencil[..],
+        );
+        let mut out = Vec::with_capacity(count);
+        for i in 0..count {
+            let take = per.min(color.len());
+            let (take_d, take_s) = (take.min(depth.len()), take.min(stencil.len()));
+            let (c, rest) = std::mem::take(&mut color).split_at_mut(take);
+            color = rest;
+            let (d, rest) = std::mem::take(&mut depth).split_at_mut(take_d);
+            depth = rest;
+            let (s, rest) = std::mem::take(&mut stencil).split_at_mut(take_s);
+            stencil = rest;
+            out.push(BandMut {
+                y0: (i * rows as usize) as i32,
+                rows: (take / width.max(1)) as i32,
+                width,
+                color: c,
+                depth: d,
+                stencil: s,
+            });
+        }
+        out
+    }
+
     /// Fills `rect` (clipped to the target) with `rgba`, writing only the channels in `mask`.
     pub fn clear_color(&mut self, rect: Rect, rgba: [f32; 4], mask: ColorMask) {
         let word = self.format.color.encode(rgba);
-        let keep = keep_mask(mask);
-        let width = self.width as usize;
-        for_rows(rect.intersect(self.bounds()), width, |range| {
-            let row = &mut self.color[range];
-            if keep == 0 {
-                row.fill(word);
-            } else {
-                row.iter_mut()
-                    .for_each(|p| *p = (*p & keep) | (word & !keep));
-            }
-        });
+        let rect = rect.intersect(self.bounds());
+        self.as_band().clear_color(rect, word, keep_mask(mask));
     }
 
     /// Fills the depth buffer inside `rect` with `z` in [0, 1].
     pub fn clear_depth(&mut self, rect: Rect, z: f64) {
         let Some(f) = self.format.depth else { return };
-        let v = f.quantize(z);
-        let width = self.width as usize;
-        for_rows(rect.intersect(self.bounds()), width, |range| {
-            self.depth[range].fill(v)
-        });
+        let rect = rect.intersect(self.bounds());
+        self.as_band().clear_depth(rect, f.quantize(z));
     }
 
     /// Fills the stencil buffer inside `rect` with `value`, writing only the bits in `mask`.
     pub fn clear_stencil(&mut self, rect: Rect, value: u32, mask: u32) {
-        if self.format.stencil_bits == 0 {
-            return;
-        }
-        let (v, m) = (value as u8, mask as u8);
-        let width = self.width as usize;
-        for_rows(rect.intersect(self.bounds()), width, |range| {
-            self.stencil[range]
-                .iter_mut()
-                .for_each(|s| *s = (*s & !m) | (v & m))
-        });
+        let rect = rect.intersect(self.bounds());
+        self.as_band().clear_stencil(rect, value as u8, mask as u8);
     }
 }
 
@@ -266,16 +352,6 @@ pub fn keep_mask(mask: ColorMask) -> u32 {
         }
     }
     keep
-}
-
-fn for_rows(r: Rect, width: usize, mut f: impl FnMut(std::ops::Range<usize>)) {
-    if r.is_empty() {
-        return;
-    }
-    for y in r.y0..r.y1 {
-        let start = y as usize * width;
-        f(start + r.x0 as usize..start + r.x1 as usize);
-    }
 }
 
 #[cfg(test)]

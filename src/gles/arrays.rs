@@ -2,7 +2,7 @@
 
 use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
-use super::context::{lock_target, Context, MAX_TEXTURE_UNITS};
+use super::context::{Context, MAX_TEXTURE_UNITS};
 use super::ffi::client_bytes;
 use super::tokens::*;
 use super::types::*;
@@ -167,9 +167,6 @@ impl Context {
         if !self.arrays.vertex.enabled || self.arrays.vertex.ptr == 0 {
             return;
         }
-        let Some(surface) = self.draw.clone() else {
-            return;
-        };
         let Some(position) = array_view(&self.arrays.vertex, hi, false) else {
             return self.set_error(GL_OUT_OF_MEMORY);
         };
@@ -188,9 +185,7 @@ impl Context {
             color,
         };
         let state = self.render_state();
-        let mut target = lock_target(surface.as_ref());
-        if core::render(&state, &call, &mut target).is_err() {
-            drop(target);
+        if let Some(Err(_)) = self.with_frame(|frame| core::record(&state, &call, frame)) {
             self.set_error(GL_OUT_OF_MEMORY);
         }
     }

@@ -7,7 +7,8 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use glam::Mat4;
 
 use crate::core::{
-    CompareFunc, CullFace, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport, Winding,
+    bin, CompareFunc, CullFace, Frame, Rect, RenderState, ShadeModel, Target, TargetFormat,
+    Viewport, Winding,
 };
 
 use super::arrays::ClientArrays;
@@ -152,6 +153,8 @@ pub struct Context {
     pub(super) unpack_alignment: usize,
     pub(super) hints: Hints,
     pub(super) arrays: ClientArrays,
+    /// Work recorded for the draw surface and not yet rasterized.
+    pub(super) frame: Option<Frame>,
 }
 
 impl Context {
@@ -201,6 +204,7 @@ impl Context {
                 generate_mipmap: GL_DONT_CARE,
             },
             arrays: ClientArrays::default(),
+            frame: None,
         }
     }
 
@@ -212,6 +216,8 @@ impl Context {
     /// Binds the draw and read surfaces (on `eglMakeCurrent`). The first time a context is
     /// bound, the viewport and scissor box are set to the draw surface's size.
     pub fn make_current(&mut self, draw: Option<Arc<dyn Surface>>, read: Option<Arc<dyn Surface>>) {
+        self.flush();
+        self.frame = None;
         if !self.initialized {
             if let Some(d) = &draw {
                 let t = lock_target(d.as_ref());
@@ -233,9 +239,39 @@ impl Context {
     /// Completes all rendering issued so far (the `glFinish` semantics), then tells the draw
     /// surface. EGL calls this before a context stops being current and on `eglWaitClient`.
     pub fn finish(&mut self) {
+        self.flush();
         if let Some(d) = &self.draw {
             d.rendering_complete();
         }
+    }
+
+    /// Rasterizes all recorded work into the draw surface.
+    pub fn flush(&mut self) {
+        if let (Some(frame), Some(d)) = (&mut self.frame, &self.draw) {
+            if !frame.is_empty() {
+                frame.flush(&mut lock_target(d.as_ref()), bin::thread_count());
+            }
+        }
+    }
+
+    /// Runs `f` with the frame that records work for the draw surface (created to fit it),
+    /// flushing first when the frame is full. `None` without a draw surface.
+    pub(super) fn with_frame<R>(&mut self, f: impl FnOnce(&mut Frame) -> R) -> Option<R> {
+        let surface = self.draw.clone()?;
+        let fits = {
+            let t = lock_target(surface.as_ref());
+            match &self.frame {
+                Some(fr) if fr.fits(&t) => true,
+                _ => {
+                    self.frame = Some(Frame::new(t.width(), t.height(), t.format()));
+                    false
+                }
+            }
+        };
+        if fits && self.frame.as_ref().is_some_and(Frame::is_full) {
+            self.flush();
+        }
+        self.frame.as_mut().map(f)
     }
 
     /// The format of the draw surface, if one is bound.

@@ -1,5 +1,6 @@
 //! Whole-framebuffer operations: clears and pixel read-back.
 
+use crate::core::target::keep_mask;
 use crate::core::{ColorFormat, Target};
 
 use super::context::{lock_target, Context};
@@ -23,20 +24,26 @@ impl Context {
         if mask & !(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT) != 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let Some(surface) = self.draw.clone() else {
-            return;
-        };
-        let mut t = lock_target(surface.as_ref());
-        let rect = self.render_state().pixel_bounds(&t);
-        if mask & GL_COLOR_BUFFER_BIT != 0 {
-            t.clear_color(rect, self.clear_color, self.color_mask);
-        }
-        if mask & GL_DEPTH_BUFFER_BIT != 0 && self.depth_mask {
-            t.clear_depth(rect, self.clear_depth as f64);
-        }
-        if mask & GL_STENCIL_BUFFER_BIT != 0 {
-            t.clear_stencil(rect, self.clear_stencil as u32, self.stencil_writemask);
-        }
+        let state = self.render_state();
+        let (color, depth, stencil) = (self.clear_color, self.clear_depth, self.clear_stencil);
+        let (color_mask, depth_mask, stencil_mask) =
+            (self.color_mask, self.depth_mask, self.stencil_writemask);
+        self.with_frame(|frame| {
+            let rect = state.pixel_bounds(frame.bounds());
+            let format = frame.format();
+            if mask & GL_COLOR_BUFFER_BIT != 0 {
+                frame.clear_color(rect, format.color.encode(color), keep_mask(color_mask));
+            }
+            if let Some(df) = format
+                .depth
+                .filter(|_| mask & GL_DEPTH_BUFFER_BIT != 0 && depth_mask)
+            {
+                frame.clear_depth(rect, df.quantize(depth as f64));
+            }
+            if format.stencil_bits > 0 && mask & GL_STENCIL_BUFFER_BIT != 0 {
+                frame.clear_stencil(rect, stencil as u8, stencil_mask as u8);
+            }
+        });
     }
 
     /// The implementation-chosen read format and type (`OES_read_format`) for the read surface.
@@ -117,6 +124,8 @@ impl Context {
         layout: PixelLayout,
         out: &mut [u8],
     ) {
+        // The read surface may be the draw surface: its pending work must land first.
+        self.flush();
         let Some(surface) = self.read.clone() else {
             return;
         };

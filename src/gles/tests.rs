@@ -109,6 +109,7 @@ fn scissored_masked_clear() {
     c.color_mask([false, true, true, true]);
     c.clear_color([0.0, 0.0, 0.0, 0.0]);
     c.clear(GL_COLOR_BUFFER_BIT);
+    c.finish();
     let t = s.0.lock().unwrap();
     assert_eq!(t.pixel(0, 0), [255, 255, 255, 255]);
     assert_eq!(t.pixel(1, 1), [255, 0, 0, 0]);

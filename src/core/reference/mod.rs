@@ -118,7 +118,7 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
         let (dx, dy) = ((win[b].0 - win[a].0) * sign, (win[b].1 - win[a].1) * sign);
         dy < 0.0 || (dy == 0.0 && dx < 0.0)
     };
-    let bounds = state.pixel_bounds(target);
+    let bounds = state.pixel_bounds(target.bounds());
     let width = target.width() as usize;
     let format = target.format();
     let keep = keep_mask(state.color_mask);

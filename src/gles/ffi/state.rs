@@ -78,10 +78,10 @@ pub unsafe extern "C" fn glGetFixedv(pname: GLenum, params: *mut GLfixed) {
     get(pname, |v| unsafe { write_values(params, v.as_fixed()) })
 }
 
-/// Every command so far has already been executed when it returned, so a flush has
-/// nothing left to start.
 #[no_mangle]
-pub extern "C" fn glFlush() {}
+pub extern "C" fn glFlush() {
+    with_context((), |c| c.flush())
+}
 
 #[no_mangle]
 pub extern "C" fn glFinish() {

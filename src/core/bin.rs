@@ -1,0 +1,196 @@
+//! Deferred, banded, parallel rasterization (ARCHITECTURE decision 5).
+//!
+//! A draw call is transformed, clipped and set up at once (the application may change its
+//! arrays right after), and each resulting primitive is recorded in the command list of every
+//! band of [`BAND_ROWS`] rows it touches. At a flush point the bands are rasterized by worker
+//! threads; one thread owns a band and replays its commands in submission order, so the
+//! pixels never depend on the thread count. Bands are whole rows, so each is one contiguous
+//! slice of every buffer and needs no locking.
+
+use std::sync::OnceLock;
+
+use super::fragment::FragmentKey;
+use super::raster;
+use super::setup::Triangle;
+use super::target::{BandMut, Rect, Target, TargetFormat};
+
+/// Rows per band: small enough that several bands per thread balance the load, large
+/// enough that a triangle's setup is shared by many rows.
+pub const BAND_ROWS: u32 = 16;
+
+/// Pending primitives beyond which a frame flushes by itself, bounding its memory.
+const MAX_PENDING: usize = 1 << 16;
+
+/// The worker thread count: `GLES_CM_THREADS` if set to a positive number, otherwise every
+/// available core.
+pub fn thread_count() -> usize {
+    static COUNT: OnceLock<usize> = OnceLock::new();
+    *COUNT.get_or_init(|| {
+        std::env::var("GLES_CM_THREADS")
+            .ok()
+            .and_then(|v| v.trim().parse::<usize>().ok())
+            .filter(|&n| n > 0)
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+    })
+}
+
+#[derive(Clone, Copy, Debug)]
+enum Command {
+    Triangle(u32),
+    ClearColor { rect: Rect, word: u32, keep: u32 },
+    ClearDepth { rect: Rect, value: u32 },
+    ClearStencil { rect: Rect, value: u8, mask: u8 },
+}
+
+/// Work recorded for one target and not yet rasterized.
+pub struct Frame {
+    format: TargetFormat,
+    width: u32,
+    height: u32,
+    triangles: Vec<(Triangle, u32)>,
+    keys: Vec<FragmentKey>,
+    bands: Vec<Vec<Command>>,
+    pending: usize,
+}
+
+impl Frame {
+    /// An empty frame for targets of this size and format.
+    pub fn new(width: u32, height: u32, format: TargetFormat) -> Frame {
+        Frame {
+            format,
+            width,
+            height,
+            triangles: Vec::new(),
+            keys: Vec::new(),
+            bands: vec![Vec::new(); height.div_ceil(BAND_ROWS) as usize],
+            pending: 0,
+        }
+    }
+
+    /// True when `target` is the kind of target this frame records for.
+    pub fn fits(&self, target: &Target) -> bool {
+        (self.width, self.height, self.format) == (target.width(), target.height(), target.format())
+    }
+
+    pub fn format(&self) -> TargetFormat {
+        self.format
+    }
+
+    pub fn bounds(&self) -> Rect {
+        Rect::new(0, 0, self.width as i32, self.height as i32)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.pending == 0
+    }
+
+    /// True when the frame holds enough work that it should be flushed before more is added.
+    pub fn is_full(&self) -> bool {
+        self.triangles.len() >= MAX_PENDING
+    }
+
+    /// Registers the fragment state for the primitives that follow, returning its number.
+    pub fn key(&mut self, key: FragmentKey) -> u32 {
+        if self.keys.last() != Some(&key) {
+            self.keys.push(key);
+        }
+        (self.keys.len() - 1) as u32
+    }
+
+    fn band_range(&self, y0: i32, y1: i32) -> std::ops::Range<usize> {
+        let b0 = (y0.max(0) as u32 / BAND_ROWS) as usize;
+        let b1 = ((y1.max(0) as u32).div_ceil(BAND_ROWS) as usize).min(self.bands.len());
+        b0..b1
+    }
+
+    fn record(&mut self, y0: i32, y1: i32, c: Command) {
+        for b in self.band_range(y0, y1) {
+            self.bands[b].push(c);
+        }
+        self.pending += 1;
+    }
+
+    pub fn triangle(&mut self, t: Triangle, key: u32) {
+        let (y0, y1) = (t.bbox.y0, t.bbox.y1);
+        let i = self.triangles.len() as u32;
+        self.triangles.push((t, key));
+        self.record(y0, y1, Command::Triangle(i));
+    }
+
+    pub fn clear_color(&mut self, rect: Rect, word: u32, keep: u32) {
+        self.record(rect.y0, rect.y1, Command::ClearColor { rect, word, keep });
+    }
+
+    pub fn clear_depth(&mut self, rect: Rect, value: u32) {
+        self.record(rect.y0, rect.y1, Command::ClearDepth { rect, value });
+    }
+
+    pub fn clear_stencil(&mut self, rect: Rect, value: u8, mask: u8) {
+        self.record(
+            rect.y0,
+            rect.y1,
+            Command::ClearStencil { rect, value, mask },
+        );
+    }
+
+    /// Rasterizes everything recorded into `target` on up to `threads` threads, then empties
+    /// the frame.
+    pub fn flush(&mut self, target: &mut Target, threads: usize) {
+        if self.is_empty() {
+            return;
+        }
+        debug_assert!(self.fits(target));
+        let this = &*self;
+        let mut bands: Vec<(BandMut<'_>, &[Command])> = target
+            .bands_mut(BAND_ROWS)
+            .into_iter()
+            .zip(this.bands.iter().map(Vec::as_slice))
+            .filter(|(_, cmds)| !cmds.is_empty())
+            .collect();
+        let threads = threads.clamp(1, bands.len().max(1));
+        if threads == 1 {
+            for (band, cmds) in &mut bands {
+                this.replay(band, cmds);
+            }
+        } else {
+            // Deal bands out round-robin so neighbouring (similarly loaded) bands spread
+            // over all threads.
+            let mut per_thread: Vec<Vec<(BandMut<'_>, &[Command])>> =
+                (0..threads).map(|_| Vec::new()).collect();
+            for (i, b) in bands.into_iter().enumerate() {
+                per_thread[i % threads].push(b);
+            }
+            std::thread::scope(|s| {
+                for mut work in per_thread {
+                    s.spawn(move || {
+                        for (band, cmds) in &mut work {
+                            this.replay(band, cmds);
+                        }
+                    });
+                }
+            });
+        }
+        self.triangles.clear();
+        self.keys.clear();
+        self.bands.iter_mut().for_each(Vec::clear);
+        self.pending = 0;
+    }
+
+    fn replay(&self, band: &mut BandMut<'_>, cmds: &[Command]) {
+        let rows = band.y0..band.y0 + band.rows;
+        for c in cmds {
+            match *c {
+                Command::Triangle(i) => {
+                    let (t, k) = &self.triangles[i as usize];
+                    let key = &self.keys[*k as usize];
+                    raster::triangle(t, rows.clone(), |span| key.shade(t, span, band));
+                }
+                Command::ClearColor { rect, word, keep } => band.clear_color(rect, word, keep),
+                Command::ClearDepth { rect, value } => band.clear_depth(rect, value),
+                Command::ClearStencil { rect, value, mask } => {
+                    band.clear_stencil(rect, value, mask)
+                }
+            }
+        }
+    }
+}
