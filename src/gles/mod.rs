@@ -9,6 +9,7 @@ pub mod get;
 pub mod matrix;
 pub mod state;
 pub mod tokens;
+pub mod tokens_ext;
 pub mod types;
 
 pub use context::{Context, Surface};

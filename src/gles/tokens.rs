@@ -2,6 +2,12 @@
 
 use super::types::*;
 
+// Version markers: the standard headers define each as 1 so programs can test for them.
+pub const GL_VERSION_ES_CM_1_0: GLint = 1;
+pub const GL_VERSION_ES_CL_1_0: GLint = 1;
+pub const GL_VERSION_ES_CM_1_1: GLint = 1;
+pub const GL_VERSION_ES_CL_1_1: GLint = 1;
+
 pub const GL_DEPTH_BUFFER_BIT: GLbitfield = 0x00000100;
 pub const GL_STENCIL_BUFFER_BIT: GLbitfield = 0x00000400;
 pub const GL_COLOR_BUFFER_BIT: GLbitfield = 0x00004000;
@@ -332,6 +338,9 @@ pub const GL_SRC1_ALPHA: GLenum = 0x8589;
 pub const GL_SRC2_ALPHA: GLenum = 0x858A;
 pub const GL_DOT3_RGB: GLenum = 0x86AE;
 pub const GL_DOT3_RGBA: GLenum = 0x86AF;
+
+// Extension: GL_OES_compressed_paletted_texture
+// Part of the core ES 1.1 header: palette-indexed compressed texture formats.
 pub const GL_PALETTE4_RGB8_OES: GLenum = 0x8B90;
 pub const GL_PALETTE4_RGBA8_OES: GLenum = 0x8B91;
 pub const GL_PALETTE4_R5_G6_B5_OES: GLenum = 0x8B92;
@@ -342,12 +351,21 @@ pub const GL_PALETTE8_RGBA8_OES: GLenum = 0x8B96;
 pub const GL_PALETTE8_R5_G6_B5_OES: GLenum = 0x8B97;
 pub const GL_PALETTE8_RGBA4_OES: GLenum = 0x8B98;
 pub const GL_PALETTE8_RGB5_A1_OES: GLenum = 0x8B99;
+
+// Extension: GL_OES_point_size_array
+// Part of the core ES 1.1 header: a per-vertex point size array.
 pub const GL_POINT_SIZE_ARRAY_OES: GLenum = 0x8B9C;
 pub const GL_POINT_SIZE_ARRAY_TYPE_OES: GLenum = 0x898A;
 pub const GL_POINT_SIZE_ARRAY_STRIDE_OES: GLenum = 0x898B;
 pub const GL_POINT_SIZE_ARRAY_POINTER_OES: GLenum = 0x898C;
 pub const GL_POINT_SIZE_ARRAY_BUFFER_BINDING_OES: GLenum = 0x8B9F;
+
+// Extension: GL_OES_point_sprite
+// Part of the core ES 1.1 header: textured point sprites.
 pub const GL_POINT_SPRITE_OES: GLenum = 0x8861;
 pub const GL_COORD_REPLACE_OES: GLenum = 0x8862;
+
+// Extension: GL_OES_read_format
+// Part of the core ES 1.1 header: the preferred glReadPixels format and type.
 pub const GL_IMPLEMENTATION_COLOR_READ_TYPE_OES: GLenum = 0x8B9A;
 pub const GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES: GLenum = 0x8B9B;

@@ -1,0 +1,167 @@
+//! Tokens of the OpenGL ES 1.x extensions this library exposes (Khronos registry values).
+//!
+//! Each group starts with a `// Extension: GL_...` line; `build.rs` turns every group into one
+//! `#ifndef GL_<ext>` block of `include/GLES/glext.h` (with its feature macro, tokens, function
+//! pointer typedefs and prototypes). An extension without tokens still gets its marker line.
+//! Keep one definition per name: a token that two extensions share lives under the first.
+
+use super::types::*;
+
+// Extension: GL_OES_blend_equation_separate
+// Separate RGB and alpha blend equations.
+pub const GL_BLEND_EQUATION_RGB_OES: GLenum = 0x8009;
+pub const GL_BLEND_EQUATION_ALPHA_OES: GLenum = 0x883D;
+
+// Extension: GL_OES_blend_func_separate
+// Separate RGB and alpha blend factors.
+pub const GL_BLEND_DST_RGB_OES: GLenum = 0x80C8;
+pub const GL_BLEND_SRC_RGB_OES: GLenum = 0x80C9;
+pub const GL_BLEND_DST_ALPHA_OES: GLenum = 0x80CA;
+pub const GL_BLEND_SRC_ALPHA_OES: GLenum = 0x80CB;
+
+// Extension: GL_OES_blend_subtract
+// Blend equations other than addition. GL_BLEND_EQUATION_OES shares its value with GL_BLEND_EQUATION_RGB_OES.
+pub const GL_BLEND_EQUATION_OES: GLenum = 0x8009;
+pub const GL_FUNC_ADD_OES: GLenum = 0x8006;
+pub const GL_FUNC_SUBTRACT_OES: GLenum = 0x800A;
+pub const GL_FUNC_REVERSE_SUBTRACT_OES: GLenum = 0x800B;
+
+// Extension: GL_OES_compressed_ETC1_RGB8_texture
+// ETC1 compressed RGB textures.
+pub const GL_ETC1_RGB8_OES: GLenum = 0x8D64;
+
+// Extension: GL_OES_draw_texture
+// Screen-aligned textured rectangles (glDrawTex*OES).
+pub const GL_TEXTURE_CROP_RECT_OES: GLenum = 0x8B9D;
+
+// Extension: GL_OES_element_index_uint
+// 32-bit element indices. The token has no suffix in the registry.
+pub const GL_UNSIGNED_INT: GLenum = 0x1405;
+
+// Extension: GL_OES_fixed_point
+// The fixed-point entry points under OES-suffixed names.
+pub const GL_FIXED_OES: GLenum = 0x140C;
+
+// Extension: GL_OES_framebuffer_object
+// Framebuffer and renderbuffer objects.
+pub const GL_NONE_OES: GLenum = 0;
+pub const GL_FRAMEBUFFER_OES: GLenum = 0x8D40;
+pub const GL_RENDERBUFFER_OES: GLenum = 0x8D41;
+pub const GL_RGBA4_OES: GLenum = 0x8056;
+pub const GL_RGB5_A1_OES: GLenum = 0x8057;
+pub const GL_RGB565_OES: GLenum = 0x8D62;
+pub const GL_DEPTH_COMPONENT16_OES: GLenum = 0x81A5;
+pub const GL_RENDERBUFFER_WIDTH_OES: GLenum = 0x8D42;
+pub const GL_RENDERBUFFER_HEIGHT_OES: GLenum = 0x8D43;
+pub const GL_RENDERBUFFER_INTERNAL_FORMAT_OES: GLenum = 0x8D44;
+pub const GL_RENDERBUFFER_RED_SIZE_OES: GLenum = 0x8D50;
+pub const GL_RENDERBUFFER_GREEN_SIZE_OES: GLenum = 0x8D51;
+pub const GL_RENDERBUFFER_BLUE_SIZE_OES: GLenum = 0x8D52;
+pub const GL_RENDERBUFFER_ALPHA_SIZE_OES: GLenum = 0x8D53;
+pub const GL_RENDERBUFFER_DEPTH_SIZE_OES: GLenum = 0x8D54;
+pub const GL_RENDERBUFFER_STENCIL_SIZE_OES: GLenum = 0x8D55;
+pub const GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_OES: GLenum = 0x8CD0;
+pub const GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_OES: GLenum = 0x8CD1;
+pub const GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_OES: GLenum = 0x8CD2;
+pub const GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_OES: GLenum = 0x8CD3;
+pub const GL_COLOR_ATTACHMENT0_OES: GLenum = 0x8CE0;
+pub const GL_DEPTH_ATTACHMENT_OES: GLenum = 0x8D00;
+pub const GL_STENCIL_ATTACHMENT_OES: GLenum = 0x8D20;
+pub const GL_FRAMEBUFFER_COMPLETE_OES: GLenum = 0x8CD5;
+pub const GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_OES: GLenum = 0x8CD6;
+pub const GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_OES: GLenum = 0x8CD7;
+pub const GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_OES: GLenum = 0x8CD9;
+pub const GL_FRAMEBUFFER_INCOMPLETE_FORMATS_OES: GLenum = 0x8CDA;
+pub const GL_FRAMEBUFFER_UNSUPPORTED_OES: GLenum = 0x8CDD;
+pub const GL_FRAMEBUFFER_BINDING_OES: GLenum = 0x8CA6;
+pub const GL_RENDERBUFFER_BINDING_OES: GLenum = 0x8CA7;
+pub const GL_MAX_RENDERBUFFER_SIZE_OES: GLenum = 0x84E8;
+pub const GL_INVALID_FRAMEBUFFER_OPERATION_OES: GLenum = 0x0506;
+
+// Extension: GL_OES_mapbuffer
+// Mapping buffer objects into client memory.
+pub const GL_WRITE_ONLY_OES: GLenum = 0x88B9;
+pub const GL_BUFFER_ACCESS_OES: GLenum = 0x88BB;
+pub const GL_BUFFER_MAPPED_OES: GLenum = 0x88BC;
+pub const GL_BUFFER_MAP_POINTER_OES: GLenum = 0x88BD;
+
+// Extension: GL_OES_matrix_get
+// Reading matrices back as the integer bit patterns of their floats.
+pub const GL_MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES: GLenum = 0x898D;
+pub const GL_PROJECTION_MATRIX_FLOAT_AS_INT_BITS_OES: GLenum = 0x898E;
+pub const GL_TEXTURE_MATRIX_FLOAT_AS_INT_BITS_OES: GLenum = 0x898F;
+
+// Extension: GL_OES_matrix_palette
+// Vertex skinning with a palette of modelview matrices.
+pub const GL_MAX_VERTEX_UNITS_OES: GLenum = 0x86A4;
+pub const GL_MAX_PALETTE_MATRICES_OES: GLenum = 0x8842;
+pub const GL_MATRIX_PALETTE_OES: GLenum = 0x8840;
+pub const GL_MATRIX_INDEX_ARRAY_OES: GLenum = 0x8844;
+pub const GL_WEIGHT_ARRAY_OES: GLenum = 0x86AD;
+pub const GL_CURRENT_PALETTE_MATRIX_OES: GLenum = 0x8843;
+pub const GL_MATRIX_INDEX_ARRAY_SIZE_OES: GLenum = 0x8846;
+pub const GL_MATRIX_INDEX_ARRAY_TYPE_OES: GLenum = 0x8847;
+pub const GL_MATRIX_INDEX_ARRAY_STRIDE_OES: GLenum = 0x8848;
+pub const GL_MATRIX_INDEX_ARRAY_POINTER_OES: GLenum = 0x8849;
+pub const GL_MATRIX_INDEX_ARRAY_BUFFER_BINDING_OES: GLenum = 0x8B9E;
+pub const GL_WEIGHT_ARRAY_SIZE_OES: GLenum = 0x86AB;
+pub const GL_WEIGHT_ARRAY_TYPE_OES: GLenum = 0x86A9;
+pub const GL_WEIGHT_ARRAY_STRIDE_OES: GLenum = 0x86AA;
+pub const GL_WEIGHT_ARRAY_POINTER_OES: GLenum = 0x86AC;
+pub const GL_WEIGHT_ARRAY_BUFFER_BINDING_OES: GLenum = 0x889E;
+
+// Extension: GL_OES_query_matrix
+// Reading the current matrix in fixed point with exponents (glQueryMatrixxOES). No tokens.
+
+// Extension: GL_OES_stencil_wrap
+// Wrapping stencil increment and decrement.
+pub const GL_INCR_WRAP_OES: GLenum = 0x8507;
+pub const GL_DECR_WRAP_OES: GLenum = 0x8508;
+
+// Extension: GL_OES_texture_cube_map
+// Cube map textures and reflection/normal texture coordinate generation.
+pub const GL_NORMAL_MAP_OES: GLenum = 0x8511;
+pub const GL_REFLECTION_MAP_OES: GLenum = 0x8512;
+pub const GL_TEXTURE_CUBE_MAP_OES: GLenum = 0x8513;
+pub const GL_TEXTURE_BINDING_CUBE_MAP_OES: GLenum = 0x8514;
+pub const GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES: GLenum = 0x8515;
+pub const GL_TEXTURE_CUBE_MAP_NEGATIVE_X_OES: GLenum = 0x8516;
+pub const GL_TEXTURE_CUBE_MAP_POSITIVE_Y_OES: GLenum = 0x8517;
+pub const GL_TEXTURE_CUBE_MAP_NEGATIVE_Y_OES: GLenum = 0x8518;
+pub const GL_TEXTURE_CUBE_MAP_POSITIVE_Z_OES: GLenum = 0x8519;
+pub const GL_TEXTURE_CUBE_MAP_NEGATIVE_Z_OES: GLenum = 0x851A;
+pub const GL_MAX_CUBE_MAP_TEXTURE_SIZE_OES: GLenum = 0x851C;
+pub const GL_TEXTURE_GEN_MODE_OES: GLenum = 0x2500;
+pub const GL_TEXTURE_GEN_STR_OES: GLenum = 0x8D60;
+
+// Extension: GL_OES_texture_mirrored_repeat
+// The mirrored-repeat texture wrap mode.
+pub const GL_MIRRORED_REPEAT_OES: GLenum = 0x8370;
+
+// Extension: GL_OES_depth24
+// 24-bit depth renderbuffers.
+pub const GL_DEPTH_COMPONENT24_OES: GLenum = 0x81A6;
+
+// Extension: GL_OES_rgb8_rgba8
+// 8-bit-per-channel renderbuffer formats.
+pub const GL_RGB8_OES: GLenum = 0x8051;
+pub const GL_RGBA8_OES: GLenum = 0x8058;
+
+// Extension: GL_OES_stencil8
+// 8-bit stencil renderbuffers.
+pub const GL_STENCIL_INDEX8_OES: GLenum = 0x8D48;
+
+// Extension: GL_EXT_texture_lod_bias
+// A bias added to the computed level of detail.
+pub const GL_MAX_TEXTURE_LOD_BIAS_EXT: GLenum = 0x84FD;
+pub const GL_TEXTURE_FILTER_CONTROL_EXT: GLenum = 0x8500;
+pub const GL_TEXTURE_LOD_BIAS_EXT: GLenum = 0x8501;
+
+// Extension: GL_EXT_texture_format_BGRA8888
+// BGRA-ordered 8-bit texture and pixel data.
+pub const GL_BGRA_EXT: GLenum = 0x80E1;
+
+// Extension: GL_EXT_texture_filter_anisotropic
+// Anisotropic texture filtering.
+pub const GL_TEXTURE_MAX_ANISOTROPY_EXT: GLenum = 0x84FE;
+pub const GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT: GLenum = 0x84FF;

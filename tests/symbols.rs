@@ -1,0 +1,240 @@
+//! The shared library as a binary: it exports only `gl*`/`egl*` symbols, exactly the
+//! functions the generated headers declare, carries the SONAME `libGLES_CM.so`, and
+//! `scripts/compat-names.sh` gives it the usual file names as symlinks to the one object.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const MANIFEST_DIR: &str = env!("CARGO_MANIFEST_DIR");
+const OUT_DIR: &str = env!("OUT_DIR");
+
+/// The generated headers that declare functions.
+const HEADERS: &[(&str, &str)] = &[
+    (
+        "GLES/gl.h",
+        include_str!(concat!(env!("OUT_DIR"), "/include/GLES/gl.h")),
+    ),
+    (
+        "GLES/glext.h",
+        include_str!(concat!(env!("OUT_DIR"), "/include/GLES/glext.h")),
+    ),
+    (
+        "EGL/egl.h",
+        include_str!(concat!(env!("OUT_DIR"), "/include/EGL/egl.h")),
+    ),
+    (
+        "EGL/eglext.h",
+        include_str!(concat!(env!("OUT_DIR"), "/include/EGL/eglext.h")),
+    ),
+];
+
+/// `target/<profile>`: the parent of the `deps/` directory holding this test executable.
+fn lib_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("current_exe");
+    exe.parent()
+        .and_then(Path::parent)
+        .expect("target/<profile>")
+        .to_path_buf()
+}
+
+fn library() -> PathBuf {
+    let lib = lib_dir().join("libGLES_CM.so");
+    assert!(lib.exists(), "{} not found", lib.display());
+    lib
+}
+
+fn run(cmd: &mut Command) -> String {
+    let out = cmd
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run {cmd:?}: {e}"));
+    assert!(
+        out.status.success(),
+        "{cmd:?} failed ({}):\n{}\n{}",
+        out.status,
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// Names of the dynamic symbols the library defines.
+fn exported() -> BTreeSet<String> {
+    let out = run(Command::new("nm")
+        .args(["-D", "--defined-only"])
+        .arg(library()));
+    out.lines()
+        .filter_map(|l| l.split_whitespace().nth(2))
+        // Version nodes of the export list show up as absolute symbols.
+        .map(|s| s.split('@').next().unwrap_or(s).to_string())
+        .collect()
+}
+
+/// Names of the functions the headers declare: `API ret ENTRY name (args);` lines.
+fn declared() -> BTreeSet<String> {
+    let mut names = BTreeSet::new();
+    for (_, text) in HEADERS {
+        for line in text.lines() {
+            let decl = line
+                .strip_prefix("GL_API ")
+                .or_else(|| line.strip_prefix("EGLAPI "));
+            let Some(decl) = decl else { continue };
+            let Some(open) = decl.find(" (") else {
+                continue;
+            };
+            let name = decl[..open].rsplit([' ', '*']).next().unwrap_or_default();
+            names.insert(name.to_string());
+        }
+    }
+    names
+}
+
+#[test]
+fn exports_only_gl_and_egl_symbols() {
+    let syms = exported();
+    assert!(!syms.is_empty(), "the library exports nothing");
+    let foreign: Vec<&String> = syms
+        .iter()
+        .filter(|s| !s.starts_with("gl") && !s.starts_with("egl"))
+        .collect();
+    assert!(
+        foreign.is_empty(),
+        "symbols other than gl*/egl* are exported: {foreign:?} (rustc exports every \
+         #[no_mangle] pub extern fn; drop the #[no_mangle] of helpers)"
+    );
+}
+
+#[test]
+fn soname_is_libgles_cm() {
+    let out = run(Command::new("readelf").arg("-d").arg(library()));
+    let soname = out.lines().find(|l| l.contains("(SONAME)"));
+    assert!(
+        soname
+            .map(|l| l.contains("[libGLES_CM.so]"))
+            .unwrap_or(false),
+        "SONAME is not libGLES_CM.so: {soname:?}"
+    );
+}
+
+#[test]
+fn declared_functions_are_exactly_the_exported_ones() {
+    let exported = exported();
+    let declared = declared();
+    assert!(!declared.is_empty(), "the headers declare no functions");
+    let not_exported: Vec<&String> = declared.difference(&exported).collect();
+    let not_declared: Vec<&String> = exported.difference(&declared).collect();
+    assert!(
+        not_exported.is_empty() && not_declared.is_empty(),
+        "declared in the headers but not exported: {not_exported:?}\n\
+         exported but not declared in any header: {not_declared:?}\n\
+         (entry points must be `#[no_mangle] pub extern \"C\" fn` items written out in \
+         src/gles/ffi/*.rs or src/egl/ffi*.rs, where build.rs finds them)"
+    );
+    // The list the C tests use agrees too.
+    let listed: BTreeSet<String> = include_str!(concat!(env!("OUT_DIR"), "/entry_points.txt"))
+        .lines()
+        .filter_map(|l| l.split_whitespace().nth(1).map(str::to_string))
+        .collect();
+    assert_eq!(
+        listed, declared,
+        "entry_points.txt disagrees with the headers"
+    );
+}
+
+const COMPAT_NAMES: &[&str] = &[
+    "libGLESv1_CM.so.1",
+    "libGLESv1_CM.so",
+    "libEGL.so.1",
+    "libEGL.so",
+];
+
+#[test]
+fn compat_names_are_symlinks_to_the_library() {
+    let dir = lib_dir();
+    let script = Path::new(MANIFEST_DIR).join("scripts/compat-names.sh");
+    // Twice: the script must be idempotent.
+    for _ in 0..2 {
+        run(Command::new("sh").arg(&script).arg(&dir));
+    }
+    let lib = std::fs::canonicalize(library()).unwrap();
+    for name in COMPAT_NAMES {
+        let path = dir.join("compat").join(name);
+        let meta =
+            std::fs::symlink_metadata(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert!(
+            meta.file_type().is_symlink(),
+            "{} is not a symlink",
+            path.display()
+        );
+        assert_eq!(
+            std::fs::read_link(&path).unwrap(),
+            Path::new("../libGLES_CM.so"),
+            "{} points elsewhere",
+            path.display()
+        );
+        assert_eq!(
+            std::fs::canonicalize(&path).unwrap(),
+            lib,
+            "{} resolves elsewhere",
+            path.display()
+        );
+    }
+
+    // Loading the GL and the EGL name yields one object: same handle, same functions.
+    let compat = dir.join("compat");
+    let work = dir.join("headers-tests").join("compat_names");
+    std::fs::create_dir_all(&work).unwrap();
+    let source = work.join("one_object.c");
+    std::fs::write(
+        &source,
+        r#"#include <dlfcn.h>
+#include <stdio.h>
+int main(int argc, char **argv)
+{
+    void *gl, *egl;
+    (void)argc;
+    gl = dlopen(argv[1], RTLD_NOW | RTLD_GLOBAL);
+    egl = dlopen(argv[2], RTLD_NOW | RTLD_GLOBAL);
+    if (!gl || !egl) {
+        printf("dlopen failed: %s\n", dlerror());
+        return 1;
+    }
+    printf("%s\n", gl == egl && dlsym(gl, "glGetError") == dlsym(egl, "glGetError") ? "same" : "different");
+    return 0;
+}
+"#,
+    )
+    .unwrap();
+    let exe = work.join("one_object");
+    run(Command::new("cc")
+        .arg(&source)
+        .arg("-o")
+        .arg(&exe)
+        .arg("-ldl"));
+    let out = run(Command::new(&exe)
+        .arg(compat.join("libGLESv1_CM.so.1"))
+        .arg(compat.join("libEGL.so.1")));
+    assert_eq!(
+        out.trim(),
+        "same",
+        "the compat names load as different objects"
+    );
+
+    // Linking against the compat dev names works and runs.
+    let entry = Path::new(MANIFEST_DIR).join("c_tests/entry_points.c");
+    let exe = work.join("entry_points_compat");
+    run(Command::new("cc")
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"])
+        .arg("-I")
+        .arg(Path::new(MANIFEST_DIR).join("include"))
+        .arg("-I")
+        .arg(OUT_DIR)
+        .arg(&entry)
+        .arg("-o")
+        .arg(&exe)
+        .arg("-L")
+        .arg(&compat)
+        .args(["-lGLESv1_CM", "-lEGL"])
+        .arg(format!("-Wl,-rpath,{}", dir.display())));
+    run(&mut Command::new(&exe));
+}
