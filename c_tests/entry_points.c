@@ -7,6 +7,8 @@
  * defined(EGL_EGLEXT_PROTOTYPES), so this file compiles with and without those macros.
  * tests/headers.rs builds it as C99, C11 and C++11 with -Wall -Wextra -Werror -pedantic.
  *
+ * ct:headers-only (tests/headers.rs builds it; the C program harness skips it)
+ *
  * Prints "entry points: N" and exits 0 when every address is non-null.
  */
 

@@ -51,11 +51,13 @@ fn include_dir() -> PathBuf {
     Path::new(MANIFEST_DIR).join("include")
 }
 
-/// `target/<profile>`: the parent of the `deps/` directory holding this test executable.
+/// The directory of the library under test.
 fn lib_dir() -> PathBuf {
+    // `target/<profile>/deps`, beside this test executable: cargo builds the cdylib there
+    // for the tests, fresh, while its copy in `target/<profile>` is only refreshed by
+    // `cargo build`.
     let exe = std::env::current_exe().expect("current_exe");
-    let deps = exe.parent().expect("deps dir");
-    let dir = deps.parent().expect("profile dir").to_path_buf();
+    let dir = exe.parent().expect("deps dir").to_path_buf();
     assert!(
         dir.join("libGLES_CM.so").exists(),
         "{} not found (cargo builds the cdylib with the tests)",

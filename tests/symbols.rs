@@ -29,13 +29,19 @@ const HEADERS: &[(&str, &str)] = &[
     ),
 ];
 
-/// `target/<profile>`: the parent of the `deps/` directory holding this test executable.
+/// The directory of the library under test.
 fn lib_dir() -> PathBuf {
+    // `target/<profile>/deps`, beside this test executable: cargo builds the cdylib there
+    // for the tests, fresh, while its copy in `target/<profile>` is only refreshed by
+    // `cargo build`.
     let exe = std::env::current_exe().expect("current_exe");
-    exe.parent()
-        .and_then(Path::parent)
-        .expect("target/<profile>")
-        .to_path_buf()
+    let dir = exe.parent().expect("deps dir").to_path_buf();
+    assert!(
+        dir.join("libGLES_CM.so").exists(),
+        "{} not found (cargo builds the cdylib with the tests)",
+        dir.join("libGLES_CM.so").display()
+    );
+    dir
 }
 
 fn library() -> PathBuf {

@@ -26,8 +26,55 @@
 extern "C" {
 #endif
 
-struct EGLMemoryPixmap;
-struct EGLMemoryWindow;
+/* The native pixmap and window of this implementation: client memory. */
+
+/**
+ * `format`: 16-bit words, red in bits 15..11, green 10..5, blue 4..0 (native byte order).
+ */
+#define EGL_MEMORY_RGB565 1
+
+/**
+ * `format`: 3 bytes per pixel, red, green, blue.
+ */
+#define EGL_MEMORY_RGB888 2
+
+/**
+ * `format`: 4 bytes per pixel, red, green, blue, alpha.
+ */
+#define EGL_MEMORY_RGBA8888 3
+
+/**
+ * `format`: 4 bytes per pixel, blue, green, red, alpha.
+ */
+#define EGL_MEMORY_BGRA8888 4
+
+/**
+ * A native pixmap: `height` rows of `width` pixels in `format` (an `EGL_MEMORY_*` value),
+ * row 0 at the top, rows `stride` bytes apart (at least `width` times the pixel size).
+ * A pixmap surface starts with these pixels, and GL rendering results are written back to
+ * them when rendering completes (glFinish, eglWaitGL, eglWaitClient, and when the surface's
+ * context stops being current). eglCopyBuffers writes into one as well.
+ */
+typedef struct EGLMemoryPixmap {
+  int32_t width;
+  int32_t height;
+  int32_t stride;
+  int32_t format;
+  void *pixels;
+} EGLMemoryPixmap;
+
+/**
+ * A native window: the same layout as a pixmap, row 0 at the top. eglSwapBuffers copies the
+ * back buffer of a window surface into `pixels`, converting to `format`. The window's size is
+ * read when the surface is created.
+ */
+typedef struct EGLMemoryWindow {
+  int32_t width;
+  int32_t height;
+  int32_t stride;
+  int32_t format;
+  void *pixels;
+} EGLMemoryWindow;
 
 /*
  * The native types of this EGL: there is no window system. A display is any value

@@ -10,8 +10,7 @@
 use std::sync::OnceLock;
 
 use super::fragment::FragmentKey;
-use super::raster;
-use super::setup::Triangle;
+use super::raster::Prim;
 use super::target::{BandMut, Rect, Target, TargetFormat};
 
 /// Rows per band: small enough that several bands per thread balance the load, large
@@ -36,7 +35,7 @@ pub fn thread_count() -> usize {
 
 #[derive(Clone, Copy, Debug)]
 enum Command {
-    Triangle(u32),
+    Prim(u32),
     ClearColor { rect: Rect, word: u32, keep: u32 },
     ClearDepth { rect: Rect, value: u32 },
     ClearStencil { rect: Rect, value: u8, mask: u8 },
@@ -47,7 +46,7 @@ pub struct Frame {
     format: TargetFormat,
     width: u32,
     height: u32,
-    triangles: Vec<(Triangle, u32)>,
+    prims: Vec<(Prim, u32)>,
     keys: Vec<FragmentKey>,
     bands: Vec<Vec<Command>>,
     pending: usize,
@@ -60,7 +59,7 @@ impl Frame {
             format,
             width,
             height,
-            triangles: Vec::new(),
+            prims: Vec::new(),
             keys: Vec::new(),
             bands: vec![Vec::new(); height.div_ceil(BAND_ROWS) as usize],
             pending: 0,
@@ -86,7 +85,7 @@ impl Frame {
 
     /// True when the frame holds enough work that it should be flushed before more is added.
     pub fn is_full(&self) -> bool {
-        self.triangles.len() >= MAX_PENDING
+        self.prims.len() >= MAX_PENDING
     }
 
     /// Registers the fragment state for the primitives that follow, returning its number.
@@ -110,11 +109,11 @@ impl Frame {
         self.pending += 1;
     }
 
-    pub fn triangle(&mut self, t: Triangle, key: u32) {
-        let (y0, y1) = (t.bbox.y0, t.bbox.y1);
-        let i = self.triangles.len() as u32;
-        self.triangles.push((t, key));
-        self.record(y0, y1, Command::Triangle(i));
+    pub fn prim(&mut self, p: Prim, key: u32) {
+        let b = p.bbox();
+        let i = self.prims.len() as u32;
+        self.prims.push((p, key));
+        self.record(b.y0, b.y1, Command::Prim(i));
     }
 
     pub fn clear_color(&mut self, rect: Rect, word: u32, keep: u32) {
@@ -170,7 +169,7 @@ impl Frame {
                 }
             });
         }
-        self.triangles.clear();
+        self.prims.clear();
         self.keys.clear();
         self.bands.iter_mut().for_each(Vec::clear);
         self.pending = 0;
@@ -180,10 +179,11 @@ impl Frame {
         let rows = band.y0..band.y0 + band.rows;
         for c in cmds {
             match *c {
-                Command::Triangle(i) => {
-                    let (t, k) = &self.triangles[i as usize];
+                Command::Prim(i) => {
+                    let (p, k) = &self.prims[i as usize];
                     let key = &self.keys[*k as usize];
-                    raster::triangle(t, rows.clone(), |span| key.shade(t, span, band));
+                    let shading = p.shading();
+                    p.spans(rows.clone(), |span| key.shade(shading, span, band));
                 }
                 Command::ClearColor { rect, word, keep } => band.clear_color(rect, word, keep),
                 Command::ClearDepth { rect, value } => band.clear_depth(rect, value),

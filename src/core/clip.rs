@@ -41,6 +41,38 @@ pub fn outcode(p: Vec4) -> u8 {
     code
 }
 
+/// Clips segment (a, b) against the clip volume, returning what is left, in the original
+/// direction.
+pub fn line(a: &ClipVertex, b: &ClipVertex) -> Option<(ClipVertex, ClipVertex)> {
+    if !(a.pos.is_finite() && b.pos.is_finite()) {
+        return None;
+    }
+    let (da, db) = (distances(a.pos), distances(b.pos));
+    let (mut t0, mut t1) = (0f32, 1f32);
+    for (&pa, &pb) in da.iter().zip(&db) {
+        if pa < 0.0 && pb < 0.0 {
+            return None;
+        }
+        if pa < 0.0 {
+            t0 = t0.max(pa / (pa - pb));
+        } else if pb < 0.0 {
+            t1 = t1.min(pa / (pa - pb));
+        }
+    }
+    if t0 > t1 {
+        return None;
+    }
+    let start = if t0 == 0.0 { *a } else { a.lerp(b, t0) };
+    let end = if t1 == 1.0 { *b } else { a.lerp(b, t1) };
+    Some((start, end))
+}
+
+/// True when a point survives clipping: its vertex lies inside the clip volume. (A wide
+/// point whose center is inside is drawn whole; one whose center is outside is not drawn.)
+pub fn point(v: &ClipVertex) -> bool {
+    v.pos.is_finite() && outcode(v.pos) == 0
+}
+
 /// Clips triangle (a, b, c) and calls `emit` with the resulting convex polygon (at least three
 /// vertices, in the original winding), or not at all when nothing is left.
 pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnce(&[ClipVertex])) {

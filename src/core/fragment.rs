@@ -1,75 +1,454 @@
-//! Per-fragment operations: interpolation, depth test, masks, and the write to the target.
+//! Per-fragment operations, in the specification's order (ES 1.1 chapter 4): [texturing and
+//! fog arrive here with the texturing work], alpha test, stencil test, depth test, blending,
+//! dither, logic op, and the masked write. The scissor test is applied earlier, by clipping
+//! every primitive's pixels to the scissor box.
+//!
+//! A [`FragmentKey`] is derived from the state once per draw call. It picks a span routine:
+//! the common keys (no alpha test, stencil, logic op or dither) run a routine specialized at
+//! compile time on whether depth is tested, whether color is interpolated and whether it is
+//! blended, so a disabled feature costs nothing per pixel; every other key runs the general
+//! routine, which tests each feature per pixel.
+//!
+//! Multisample operations (`GL_SAMPLE_COVERAGE`, `GL_SAMPLE_ALPHA_TO_COVERAGE`,
+//! `GL_SAMPLE_ALPHA_TO_ONE`) are skipped: every config has `EGL_SAMPLE_BUFFERS` 0, and the
+//! specification skips them then (ES 1.1 §4.1.3).
 
 use super::raster::Span;
-use super::setup::Triangle;
-use super::state::{CompareFunc, RenderState};
-use super::target::{keep_mask, BandMut, ColorFormat, DepthFormat, TargetFormat};
+use super::setup::Shading;
+use super::state::{
+    AlphaTest, Blend, BlendEquation, BlendFactor, CompareFunc, LogicOp, RenderState, StencilOp,
+    StencilTest,
+};
+use super::target::{expand_to_8, keep_mask, BandMut, ColorFormat, DepthFormat, TargetFormat};
 
-/// What the fragment stage does for the current state, decided once per draw call so the
-/// per-pixel loop tests nothing that is off.
+/// Which span routine a key runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Route {
+    /// Nothing reaches the color buffer and no test can change depth or stencil (so
+    /// coverage, which only changes alpha, cannot matter either).
+    Nothing,
+    /// `Simple<DEPTH, SMOOTH, BLEND>`: no alpha test, stencil, logic op or dither.
+    Simple {
+        depth: bool,
+        smooth: bool,
+        blend: bool,
+    },
+    General,
+}
+
+/// What the fragment stage does for the current state, decided once per draw call.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FragmentKey {
-    /// The depth test, present only when enabled and the target has depth.
-    depth_test: Option<CompareFunc>,
-    depth_write: bool,
-    /// Stored bits the color mask protects; all ones means color is not written at all.
-    keep: u32,
     color: ColorFormat,
-    depth_format: Option<DepthFormat>,
+    /// Stored bits the color mask protects; all ones means color is not written.
+    keep: u32,
+    /// The depth test, present only when enabled and the target has depth.
+    depth: Option<(CompareFunc, DepthFormat)>,
+    depth_write: bool,
+    /// Present only when enabled and the target has stencil.
+    stencil: Option<StencilTest>,
+    stencil_writemask: u8,
+    alpha: Option<AlphaTest>,
+    blend: Option<Blend>,
+    logic_op: Option<LogicOp>,
+    /// Ordered dithering, only where it changes something: channels narrower than 8 bits.
+    dither: bool,
+    flat: bool,
+    route: Route,
 }
 
 impl FragmentKey {
     pub fn new(state: &RenderState, format: TargetFormat) -> FragmentKey {
-        let has_depth = format.depth.is_some();
-        let depth_test = state.depth_test.filter(|_| has_depth);
-        FragmentKey {
-            depth_test,
-            // Depth is written only when the test is enabled (GL 1.x §4.1.5).
-            depth_write: depth_test.is_some() && state.depth_write,
-            keep: keep_mask(state.color_mask),
+        let depth = state.depth_test.zip(format.depth);
+        let stencil = state.stencil_test.filter(|_| format.stencil_bits > 0);
+        let keep = keep_mask(state.color_mask);
+        let logic_op = state.logic_op;
+        // Logic op replaces blending (ES 1.1 §4.1.10).
+        let blend = state.blend.filter(|_| logic_op.is_none());
+        let dither = state.dither
+            && format.color != ColorFormat::Rgba8888
+            && format.color != ColorFormat::Rgb888;
+        let mut key = FragmentKey {
             color: format.color,
-            depth_format: format.depth,
+            keep,
+            depth,
+            // Depth is written only when the test is enabled (ES 1.1 §4.1.6).
+            depth_write: depth.is_some() && state.depth_write,
+            stencil,
+            stencil_writemask: state.stencil_writemask as u8,
+            alpha: state.alpha_test,
+            blend,
+            logic_op,
+            dither,
+            flat: state.shade_model == super::state::ShadeModel::Flat,
+            route: Route::General,
+        };
+        key.route = if key.stencil.is_none() && keep == u32::MAX && !key.depth_write {
+            Route::Nothing
+        } else if key.alpha.is_none()
+            && key.stencil.is_none()
+            && key.logic_op.is_none()
+            && !key.dither
+        {
+            Route::Simple {
+                depth: key.depth.is_some(),
+                smooth: !key.flat,
+                blend: key.blend.is_some(),
+            }
+        } else {
+            Route::General
+        };
+        key
+    }
+
+    /// Shades the pixels of `span`, which lies inside the band and the primitive.
+    pub fn shade(&self, t: &Shading, span: Span, band: &mut BandMut<'_>) {
+        if t.coverage.is_some() {
+            return general(self, t, span, band);
+        }
+        match self.route {
+            Route::Nothing => {}
+            Route::Simple {
+                depth,
+                smooth,
+                blend,
+            } => match (depth, smooth, blend) {
+                (false, false, false) => simple::<false, false, false>(self, t, span, band),
+                (false, false, true) => simple::<false, false, true>(self, t, span, band),
+                (false, true, false) => simple::<false, true, false>(self, t, span, band),
+                (false, true, true) => simple::<false, true, true>(self, t, span, band),
+                (true, false, false) => simple::<true, false, false>(self, t, span, band),
+                (true, false, true) => simple::<true, false, true>(self, t, span, band),
+                (true, true, false) => simple::<true, true, false>(self, t, span, band),
+                (true, true, true) => simple::<true, true, true>(self, t, span, band),
+            },
+            Route::General => general(self, t, span, band),
+        }
+    }
+}
+
+/// Interpolates a triangle's color and depth along one span: values at the span's first
+/// pixel plus a per-pixel step, evaluated as `start + i·step` so error does not accumulate.
+struct SpanInterp {
+    z0: f64,
+    dz: f64,
+    inv_w0: f32,
+    d_inv_w: f32,
+    c0: [f32; 4],
+    dc: [f32; 4],
+}
+
+impl SpanInterp {
+    #[inline]
+    fn new(t: &Shading, span: Span) -> SpanInterp {
+        let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
+        SpanInterp {
+            z0: t.z.at(px, py),
+            dz: t.z.dx,
+            inv_w0: t.inv_w.at(px, py) as f32,
+            d_inv_w: t.inv_w.dx as f32,
+            c0: t.color_w.map(|p| p.at(px, py) as f32),
+            dc: t.color_w.map(|p| p.dx as f32),
         }
     }
 
-    /// Shades the pixels of `span`, which lies inside the band and the triangle.
-    pub fn shade(&self, t: &Triangle, span: Span, band: &mut BandMut<'_>) {
-        let depth_format = self.depth_format;
-        let (colors, depths) = (&mut *band.color, &mut *band.depth);
-        let row = (span.y - band.y0) as usize * band.width;
-        let ry = (span.y - t.origin.1) as i64;
-        let inv_area = 1.0 / t.area as f64;
-        for x in span.x0..span.x1 {
-            let rx = (x - t.origin.0) as i64;
-            let e = t.edges.map(|e| e.at_center(rx, ry) as f64 * inv_area);
-            let at = row + x as usize;
-            if let (Some(func), Some(df)) = (self.depth_test, depth_format) {
-                let z = df.quantize(e[0] * t.z[0] + e[1] * t.z[1] + e[2] * t.z[2]);
-                if !func.test(z, depths[at]) {
-                    continue;
-                }
-                if self.depth_write {
-                    depths[at] = z;
-                }
-            }
-            if self.keep == u32::MAX {
+    #[inline]
+    fn z(&self, i: usize) -> f64 {
+        self.z0 + self.dz * i as f64
+    }
+
+    /// The perspective-correct color at pixel `i` of the span.
+    #[inline]
+    fn color(&self, i: usize) -> [f32; 4] {
+        let fi = i as f32;
+        let w = 1.0 / (self.inv_w0 + self.d_inv_w * fi);
+        std::array::from_fn(|c| (self.c0[c] + self.dc[c] * fi) * w)
+    }
+}
+
+/// The span routine for keys without alpha test, stencil, logic op or dither.
+fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
+    k: &FragmentKey,
+    t: &Shading,
+    span: Span,
+    band: &mut BandMut<'_>,
+) {
+    let interp = SpanInterp::new(t, span);
+    let row = (span.y - band.y0) as usize * band.width;
+    let flat = t.flat.unwrap_or_default();
+    let flat_word = k.color.encode(flat);
+    let write_color = k.keep != u32::MAX;
+    for (i, x) in (span.x0..span.x1).enumerate() {
+        let at = row + x as usize;
+        if DEPTH {
+            let (func, df) = k.depth.expect("DEPTH routes have a depth test");
+            let z = df.quantize(interp.z(i));
+            if !func.test(z, band.depth[at]) {
                 continue;
             }
-            let b = e.map(|v| v as f32);
-            let mut rgba = [0f32; 4];
-            if t.flat {
-                // Every vertex carries the provoking color, so any weight recovers it exactly.
-                rgba = t.color_w[0].map(|c| c / t.inv_w[0]);
-            } else {
-                let w = 1.0 / (b[0] * t.inv_w[0] + b[1] * t.inv_w[1] + b[2] * t.inv_w[2]);
-                for (c, out) in rgba.iter_mut().enumerate() {
-                    *out =
-                        (b[0] * t.color_w[0][c] + b[1] * t.color_w[1][c] + b[2] * t.color_w[2][c])
-                            * w;
-                }
+            if k.depth_write {
+                band.depth[at] = z;
             }
-            let word = self.color.encode(rgba);
-            colors[at] = (colors[at] & self.keep) | (word & !self.keep);
         }
+        if !write_color {
+            continue;
+        }
+        let dst = band.color[at];
+        let word = if BLEND {
+            let src = if SMOOTH { interp.color(i) } else { flat };
+            let b = k.blend.expect("BLEND routes blend");
+            k.color.encode(blend(&b, src, decode(k.color, dst)))
+        } else if SMOOTH {
+            k.color.encode(interp.color(i))
+        } else {
+            flat_word
+        };
+        band.color[at] = (dst & k.keep) | (word & !k.keep);
+    }
+}
+
+/// The routine for every key: each enabled operation, per pixel, in the specification's order.
+fn general(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
+    let interp = SpanInterp::new(t, span);
+    let row = (span.y - band.y0) as usize * band.width;
+    for (i, x) in (span.x0..span.x1).enumerate() {
+        let at = row + x as usize;
+        let mut src = match t.flat {
+            Some(c) => c,
+            None => interp.color(i),
+        };
+        if let Some(c) = &t.coverage {
+            // Antialiasing multiplies alpha by coverage (ES 1.1 §3.2); a pixel the
+            // primitive misses produces no fragment.
+            let share = c.at(x, span.y);
+            if share == 0.0 {
+                continue;
+            }
+            src[3] *= share;
+        }
+        if let Some(a) = k.alpha {
+            // Both sides at 8-bit precision, so a reference equal to a vertex alpha compares
+            // equal however the alpha was interpolated.
+            if !a.func.test(unorm8(src[3]), unorm8(a.reference)) {
+                continue;
+            }
+        }
+        if let Some(s) = k.stencil {
+            let stored = band.stencil[at];
+            let reference = s.reference.clamp(0, 255) as u8;
+            let mask = s.mask as u8;
+            if !s.func.test(reference & mask, stored & mask) {
+                band.stencil[at] = stencil_write(s.fail, stored, reference, k.stencil_writemask);
+                continue;
+            }
+        }
+        if let Some((func, df)) = k.depth {
+            let z = df.quantize(interp.z(i));
+            if !func.test(z, band.depth[at]) {
+                if let Some(s) = k.stencil {
+                    let stored = band.stencil[at];
+                    let r = s.reference.clamp(0, 255) as u8;
+                    band.stencil[at] = stencil_write(s.depth_fail, stored, r, k.stencil_writemask);
+                }
+                continue;
+            }
+            if k.depth_write {
+                band.depth[at] = z;
+            }
+        }
+        if let Some(s) = k.stencil {
+            let stored = band.stencil[at];
+            let r = s.reference.clamp(0, 255) as u8;
+            band.stencil[at] = stencil_write(s.depth_pass, stored, r, k.stencil_writemask);
+        }
+        if k.keep == u32::MAX {
+            continue;
+        }
+        let dst = band.color[at];
+        let src = match k.blend {
+            Some(b) => blend(&b, src, decode(k.color, dst)),
+            None => src,
+        };
+        let mut word = if k.dither {
+            encode_dithered(k.color, src, x, span.y)
+        } else {
+            k.color.encode(src)
+        };
+        if let Some(op) = k.logic_op {
+            word = logic_op(k.color, op, word, dst);
+        }
+        band.color[at] = (dst & k.keep) | (word & !k.keep);
+    }
+}
+
+fn unorm8(c: f32) -> u8 {
+    (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+}
+
+/// The new stencil value after `op`, through the write mask.
+fn stencil_write(op: StencilOp, stored: u8, reference: u8, writemask: u8) -> u8 {
+    let v = match op {
+        StencilOp::Keep => return stored,
+        StencilOp::Zero => 0,
+        StencilOp::Replace => reference,
+        StencilOp::Incr => stored.saturating_add(1),
+        StencilOp::Decr => stored.saturating_sub(1),
+        StencilOp::Invert => !stored,
+        StencilOp::IncrWrap => stored.wrapping_add(1),
+        StencilOp::DecrWrap => stored.wrapping_sub(1),
+    };
+    (stored & !writemask) | (v & writemask)
+}
+
+/// The stored color as values in [0, 1]: each channel's n-bit value over 2ⁿ − 1, exactly
+/// (not the replicated 8-bit byte over 255); 1 for a missing alpha.
+fn decode(format: ColorFormat, word: u32) -> [f32; 4] {
+    let bits = format.bits();
+    let bytes = word.to_le_bytes();
+    std::array::from_fn(|c| match bits[c] {
+        0 => 1.0,
+        n => (bytes[c] >> (8 - n)) as f32 / ((1u32 << n) - 1) as f32,
+    })
+}
+
+fn factor(f: BlendFactor, src: &[f32; 4], dst: &[f32; 4], c: usize) -> f32 {
+    match f {
+        BlendFactor::Zero => 0.0,
+        BlendFactor::One => 1.0,
+        BlendFactor::SrcColor => src[c],
+        BlendFactor::OneMinusSrcColor => 1.0 - src[c],
+        BlendFactor::DstColor => dst[c],
+        BlendFactor::OneMinusDstColor => 1.0 - dst[c],
+        BlendFactor::SrcAlpha => src[3],
+        BlendFactor::OneMinusSrcAlpha => 1.0 - src[3],
+        BlendFactor::DstAlpha => dst[3],
+        BlendFactor::OneMinusDstAlpha => 1.0 - dst[3],
+        BlendFactor::SrcAlphaSaturate => {
+            if c == 3 {
+                1.0
+            } else {
+                src[3].min(1.0 - dst[3])
+            }
+        }
+    }
+}
+
+/// Blends `src` (clamped to [0, 1] first) over `dst`; the result is clamped by the encoder.
+fn blend(b: &Blend, src: [f32; 4], dst: [f32; 4]) -> [f32; 4] {
+    let src = src.map(|c| c.clamp(0.0, 1.0));
+    std::array::from_fn(|c| {
+        let (sf, df, eq) = if c < 3 {
+            (b.src_rgb, b.dst_rgb, b.eq_rgb)
+        } else {
+            (b.src_alpha, b.dst_alpha, b.eq_alpha)
+        };
+        let s = src[c] * factor(sf, &src, &dst, c);
+        let d = dst[c] * factor(df, &src, &dst, c);
+        match eq {
+            BlendEquation::Add => s + d,
+            BlendEquation::Subtract => s - d,
+            BlendEquation::ReverseSubtract => d - s,
+        }
+    })
+}
+
+/// A 4×4 ordered-dither threshold for pixel (x, y), in (0, 1).
+fn dither_threshold(x: i32, y: i32) -> f32 {
+    const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
+    (BAYER[(y & 3) as usize][(x & 3) as usize] as f32 + 0.5) / 16.0
+}
+
+/// Quantizes with ordered dithering: `floor(c · (2ⁿ − 1) + t)` picks one of the two nearest
+/// representable values, and a value that is already representable stays itself.
+fn encode_dithered(format: ColorFormat, rgba: [f32; 4], x: i32, y: i32) -> u32 {
+    let bits = format.bits();
+    let t = dither_threshold(x, y);
+    let bytes: [u8; 4] = std::array::from_fn(|c| match bits[c] {
+        0 => 255,
+        n => {
+            let max = ((1u32 << n) - 1) as f32;
+            let v = (rgba[c].clamp(0.0, 1.0) * max + t).floor().min(max) as u32;
+            expand_to_8(v, n)
+        }
+    });
+    u32::from_le_bytes(bytes)
+}
+
+/// Applies `op` to the stored n-bit values of each channel.
+fn logic_op(format: ColorFormat, op: LogicOp, src: u32, dst: u32) -> u32 {
+    let bits = format.bits();
+    let (s, d) = (src.to_le_bytes(), dst.to_le_bytes());
+    let bytes: [u8; 4] = std::array::from_fn(|c| match bits[c] {
+        0 => 255,
+        n => {
+            let shift = 8 - n;
+            let v = op.apply((s[c] >> shift) as u32, (d[c] >> shift) as u32) & ((1 << n) - 1);
+            expand_to_8(v, n)
+        }
+    });
+    u32::from_le_bytes(bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dithering_keeps_representable_values_and_picks_a_neighbour_otherwise() {
+        for x in 0..4 {
+            for y in 0..4 {
+                let w = encode_dithered(ColorFormat::Rgb565, [1.0, 0.0, 16.0 / 31.0, 1.0], x, y);
+                assert_eq!(w, ColorFormat::Rgb565.encode([1.0, 0.0, 16.0 / 31.0, 1.0]));
+                let v = 10.4 / 31.0;
+                let b = encode_dithered(ColorFormat::Rgb565, [v, v, v, 1.0], x, y).to_le_bytes();
+                assert!(b[0] == expand_to_8(10, 5) || b[0] == expand_to_8(11, 5));
+            }
+        }
+    }
+
+    #[test]
+    fn decode_inverts_encode_exactly() {
+        for f in [
+            ColorFormat::Rgb565,
+            ColorFormat::Rgb888,
+            ColorFormat::Rgba8888,
+        ] {
+            for v in 0..=31u32 {
+                let c = v as f32 / 31.0;
+                let w = f.encode([c, c, c, c]);
+                assert_eq!(f.encode(decode(f, w)), w);
+            }
+        }
+    }
+
+    #[test]
+    fn logic_ops_work_on_the_stored_bits() {
+        let f = ColorFormat::Rgb565;
+        let s = f.encode([1.0, 0.0, 1.0, 1.0]);
+        let d = f.encode([1.0, 1.0, 0.0, 1.0]);
+        assert_eq!(
+            logic_op(f, LogicOp::Xor, s, d),
+            f.encode([0.0, 1.0, 1.0, 1.0])
+        );
+        assert_eq!(logic_op(f, LogicOp::Set, s, d), f.encode([1.0; 4]));
+        let g = ColorFormat::Rgba8888;
+        assert_eq!(logic_op(g, LogicOp::Invert, 0, 0x12345678), !0x12345678u32);
+    }
+
+    #[test]
+    fn stencil_ops_saturate_wrap_and_respect_the_write_mask() {
+        assert_eq!(stencil_write(StencilOp::Incr, 255, 0, 0xFF), 255);
+        assert_eq!(stencil_write(StencilOp::Decr, 0, 0, 0xFF), 0);
+        assert_eq!(stencil_write(StencilOp::IncrWrap, 255, 0, 0xFF), 0);
+        assert_eq!(stencil_write(StencilOp::DecrWrap, 0, 0, 0xFF), 255);
+        assert_eq!(stencil_write(StencilOp::Replace, 0xF0, 0x0F, 0x03), 0xF3);
+        assert_eq!(stencil_write(StencilOp::Invert, 0x0F, 0, 0xF0), 0xFF);
+    }
+
+    #[test]
+    fn saturate_blends_by_the_smaller_of_source_alpha_and_free_destination() {
+        let b = Blend::func(BlendFactor::SrcAlphaSaturate, BlendFactor::One);
+        let out = blend(&b, [1.0, 1.0, 1.0, 0.75], [0.0, 0.0, 0.0, 0.5]);
+        assert_eq!(out, [0.5, 0.5, 0.5, 0.75 + 0.5]);
     }
 }

@@ -3,7 +3,7 @@
 
 use super::clip;
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
-use super::target::Rect;
+use super::target::{DepthFormat, Rect};
 use super::vertex::ClipVertex;
 use super::SUBPIXEL_BITS;
 
@@ -43,33 +43,129 @@ impl Edge {
     }
 }
 
+/// A quantity interpolated linearly in window space: `dx·px + dy·py + c` at the center of
+/// pixel (px, py), counted from the triangle's origin.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Plane {
+    pub dx: f64,
+    pub dy: f64,
+    pub c: f64,
+}
+
+impl Plane {
+    /// The plane through the values `v` at the vertices. A vertex's barycentric weight at a
+    /// pixel center is `E_i / area` of the edge opposite it, which is linear in the pixel
+    /// coordinates; the plane is the weighted sum of those, exact up to f64 rounding.
+    fn through(edges: &[Edge; 3], area: f64, v: [f64; 3]) -> Plane {
+        let mut p = Plane::default();
+        for (e, v) in edges.iter().zip(v) {
+            let (a, b, c) = (e.a as f64, e.b as f64, e.c as f64);
+            p.dx += v * a * ONE as f64 / area;
+            p.dy += v * b * ONE as f64 / area;
+            p.c += v * (a * HALF as f64 + b * HALF as f64 + c) / area;
+        }
+        p
+    }
+
+    /// The value at the center of pixel (px, py), relative to the origin.
+    #[inline]
+    pub fn at(&self, px: i32, py: i32) -> f64 {
+        self.dx * px as f64 + self.dy * py as f64 + self.c
+    }
+}
+
+/// How the fragments of one primitive get their depth and color: planes in window space,
+/// and for antialiased lines and points, the share of each pixel the primitive covers.
+#[derive(Clone, Debug)]
+pub struct Shading {
+    /// Pixel (origin.0, origin.1) is where plane coordinates are 0.
+    pub origin: (i32, i32),
+    /// Window-space depth, polygon offset included (clamped to [0, 1] when quantized).
+    pub z: Plane,
+    /// 1/w, and each color channel divided by w: their quotient is the perspective-correct
+    /// color.
+    pub inv_w: Plane,
+    pub color_w: [Plane; 4],
+    /// The color when it does not vary: flat shading, points.
+    pub flat: Option<[f32; 4]>,
+    pub coverage: Option<Coverage>,
+}
+
+/// Antialiasing coverage: the share of a pixel's square inside the primitive, estimated
+/// with 4 × 4 samples (so in steps of 1/16).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Coverage {
+    /// A rectangle along a line: from (x, y) in unit direction (ux, uy) for `len`, `half`
+    /// to either side.
+    Line {
+        x: f64,
+        y: f64,
+        ux: f64,
+        uy: f64,
+        len: f64,
+        half: f64,
+    },
+    /// A disc.
+    Point { x: f64, y: f64, radius: f64 },
+}
+
+impl Coverage {
+    pub const SAMPLES: i32 = 4;
+
+    /// The covered share of pixel (px, py), in [0, 1].
+    pub fn at(&self, px: i32, py: i32) -> f32 {
+        let n = Self::SAMPLES;
+        let mut hits = 0;
+        for sy in 0..n {
+            for sx in 0..n {
+                let x = px as f64 + (sx as f64 + 0.5) / n as f64;
+                let y = py as f64 + (sy as f64 + 0.5) / n as f64;
+                let inside = match *self {
+                    Coverage::Line {
+                        x: x0,
+                        y: y0,
+                        ux,
+                        uy,
+                        len,
+                        half,
+                    } => {
+                        let (dx, dy) = (x - x0, y - y0);
+                        let along = dx * ux + dy * uy;
+                        let across = dx * uy - dy * ux;
+                        (0.0..len).contains(&along) && across.abs() < half
+                    }
+                    Coverage::Point {
+                        x: cx,
+                        y: cy,
+                        radius,
+                    } => (x - cx) * (x - cx) + (y - cy) * (y - cy) < radius * radius,
+                };
+                hits += inside as i32;
+            }
+        }
+        hits as f32 / (n * n) as f32
+    }
+}
+
 /// A triangle ready to rasterize.
 #[derive(Clone, Debug)]
 pub struct Triangle {
-    /// Pixel (origin.0, origin.1) is where edge coordinates are 0.
-    pub origin: (i32, i32),
-    /// `edges[i]` is the edge opposite vertex i, so `E_i / area` is vertex i's barycentric weight.
+    /// `edges[i]` is the edge opposite vertex i; coordinates relative to `shading.origin`.
     pub edges: [Edge; 3],
-    /// Twice the area in subpixel units, always positive.
-    pub area: i64,
     /// The pixels the triangle may cover, within the draw bounds.
     pub bbox: Rect,
-    /// Window-space depth in [0, 1] at each vertex.
-    pub z: [f64; 3],
-    /// 1/w at each vertex, for perspective-correct interpolation.
-    pub inv_w: [f32; 3],
-    /// Vertex colors divided by w, or the provoking color repeated under flat shading.
-    pub color_w: [[f32; 4]; 3],
-    pub flat: bool,
+    pub shading: Shading,
 }
 
-/// Sets up a clipped triangle for rasterization inside `bounds`, or returns `None` when it is
-/// culled, has no area, or cannot touch `bounds`. `provoking` supplies the flat-shaded color.
+/// Sets up a clipped triangle for rasterization inside `bounds` of a target with `depth`
+/// bits, or returns `None` when it is culled, has no area, or cannot touch `bounds`.
+/// `provoking` supplies the flat-shaded color.
 pub fn triangle(
     state: &RenderState,
     v: [&ClipVertex; 3],
     provoking: &ClipVertex,
     bounds: Rect,
+    depth: Option<DepthFormat>,
 ) -> Option<Triangle> {
     let vp = state.viewport;
     let (hw, hh) = (vp.width as f64 * 0.5, vp.height as f64 * 0.5);
@@ -77,7 +173,7 @@ pub fn triangle(
     let [n, f] = state.depth_range.map(f64::from);
     let mut win = [(0i64, 0i64); 3];
     let mut z = [0f64; 3];
-    let mut inv_w = [0f32; 3];
+    let mut inv_w = [0f64; 3];
     for i in 0..3 {
         let p = v[i].pos;
         debug_assert!(p.w >= clip::W_MIN);
@@ -91,7 +187,7 @@ pub fn triangle(
             (y * ONE as f64).round() as i64,
         );
         z[i] = ((p.z as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
-        inv_w[i] = iw as f32;
+        inv_w[i] = iw;
     }
     // Pixel bounding box: pixel centers strictly inside the snapped extent.
     let min_x = win.iter().map(|p| p.0).min()?;
@@ -137,19 +233,33 @@ pub fn triangle(
         Edge::new(q[2].0, q[2].1, q[0].0, q[0].1),
         Edge::new(q[0].0, q[0].1, q[1].0, q[1].1),
     ];
-    let flat = state.shade_model == ShadeModel::Flat;
-    let color_w = order.map(|i| {
-        let c = if flat { provoking.color } else { v[i].color };
-        (c * inv_w[i]).to_array()
+    let area = area.abs() as f64;
+    let plane = |f: &dyn Fn(usize) -> f64| Plane::through(&edges, area, order.map(f));
+    let mut z_plane = plane(&|i| z[i]);
+    if let (Some(o), Some(df)) = (state.polygon_offset, depth) {
+        // ES 1.1 §3.5.5: factor × the larger depth slope (per pixel, in window space) plus
+        // units × the smallest resolvable difference, one step of the depth buffer.
+        let slope = z_plane.dx.abs().max(z_plane.dy.abs());
+        z_plane.c += o.factor as f64 * slope + o.units as f64 / df.max() as f64;
+    }
+    let flat = (state.shade_model == ShadeModel::Flat).then(|| provoking.color.to_array());
+    let color_w = std::array::from_fn(|c| {
+        if flat.is_some() {
+            Plane::default()
+        } else {
+            plane(&|i| v[i].color[c] as f64 * inv_w[i])
+        }
     });
     Some(Triangle {
-        origin: (bbox.x0, bbox.y0),
         edges,
-        area: area.abs(),
         bbox,
-        z: order.map(|i| z[i]),
-        inv_w: order.map(|i| inv_w[i]),
-        color_w,
-        flat,
+        shading: Shading {
+            origin: (bbox.x0, bbox.y0),
+            z: z_plane,
+            inv_w: plane(&|i| inv_w[i]),
+            color_w,
+            flat,
+            coverage: None,
+        },
     })
 }

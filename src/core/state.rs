@@ -54,6 +54,142 @@ pub enum ShadeModel {
     Smooth,
 }
 
+/// `glAlphaFunc`: fragments pass when `func(alpha, reference)` holds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AlphaTest {
+    pub func: CompareFunc,
+    /// Clamped to [0, 1].
+    pub reference: f32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum StencilOp {
+    Keep,
+    Zero,
+    Replace,
+    /// Saturates at the largest stencil value.
+    Incr,
+    /// Saturates at 0.
+    Decr,
+    Invert,
+    /// `OES_stencil_wrap`: wraps around.
+    IncrWrap,
+    DecrWrap,
+}
+
+/// `glStencilFunc` and `glStencilOp`: the test compares `reference & mask` with
+/// `stored & mask`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StencilTest {
+    pub func: CompareFunc,
+    pub reference: i32,
+    pub mask: u32,
+    pub fail: StencilOp,
+    pub depth_fail: StencilOp,
+    pub depth_pass: StencilOp,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BlendFactor {
+    Zero,
+    One,
+    SrcColor,
+    OneMinusSrcColor,
+    DstColor,
+    OneMinusDstColor,
+    SrcAlpha,
+    OneMinusSrcAlpha,
+    DstAlpha,
+    OneMinusDstAlpha,
+    SrcAlphaSaturate,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BlendEquation {
+    Add,
+    Subtract,
+    ReverseSubtract,
+}
+
+/// Blending, with separate color and alpha factors and equations
+/// (`OES_blend_func_separate`, `OES_blend_equation_separate`, `OES_blend_subtract`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Blend {
+    pub src_rgb: BlendFactor,
+    pub dst_rgb: BlendFactor,
+    pub src_alpha: BlendFactor,
+    pub dst_alpha: BlendFactor,
+    pub eq_rgb: BlendEquation,
+    pub eq_alpha: BlendEquation,
+}
+
+impl Blend {
+    /// `glBlendFunc(src, dst)` with the ADD equation.
+    pub fn func(src: BlendFactor, dst: BlendFactor) -> Blend {
+        Blend {
+            src_rgb: src,
+            dst_rgb: dst,
+            src_alpha: src,
+            dst_alpha: dst,
+            eq_rgb: BlendEquation::Add,
+            eq_alpha: BlendEquation::Add,
+        }
+    }
+}
+
+/// The 16 logic operations of `glLogicOp`, applied to the stored bits of each channel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LogicOp {
+    Clear,
+    And,
+    AndReverse,
+    Copy,
+    AndInverted,
+    Noop,
+    Xor,
+    Or,
+    Nor,
+    Equiv,
+    Invert,
+    OrReverse,
+    CopyInverted,
+    OrInverted,
+    Nand,
+    Set,
+}
+
+impl LogicOp {
+    /// `s op d` on bit patterns.
+    #[inline]
+    pub fn apply(self, s: u32, d: u32) -> u32 {
+        match self {
+            LogicOp::Clear => 0,
+            LogicOp::And => s & d,
+            LogicOp::AndReverse => s & !d,
+            LogicOp::Copy => s,
+            LogicOp::AndInverted => !s & d,
+            LogicOp::Noop => d,
+            LogicOp::Xor => s ^ d,
+            LogicOp::Or => s | d,
+            LogicOp::Nor => !(s | d),
+            LogicOp::Equiv => !(s ^ d),
+            LogicOp::Invert => !d,
+            LogicOp::OrReverse => s | !d,
+            LogicOp::CopyInverted => !s,
+            LogicOp::OrInverted => !s | d,
+            LogicOp::Nand => !(s & d),
+            LogicOp::Set => u32::MAX,
+        }
+    }
+}
+
+/// `glPolygonOffset`, applied to filled triangles when `GL_POLYGON_OFFSET_FILL` is enabled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolygonOffset {
+    pub factor: f32,
+    pub units: f32,
+}
+
 /// The viewport rectangle in window pixels (width and height already clamped to the maximum).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Viewport {
@@ -78,6 +214,21 @@ pub struct RenderState {
     pub depth_test: Option<CompareFunc>,
     pub depth_write: bool,
     pub color_mask: ColorMask,
+    pub polygon_offset: Option<PolygonOffset>,
+    pub alpha_test: Option<AlphaTest>,
+    pub stencil_test: Option<StencilTest>,
+    /// Stencil bits fragments may write (`glStencilMask`).
+    pub stencil_writemask: u32,
+    pub blend: Option<Blend>,
+    /// When enabled, replaces blending (ES 1.1 §4.1.10).
+    pub logic_op: Option<LogicOp>,
+    pub dither: bool,
+    /// `glLineWidth` and `GL_LINE_SMOOTH`.
+    pub line_width: f32,
+    pub line_smooth: bool,
+    /// `glPointSize` and `GL_POINT_SMOOTH`.
+    pub point_size: f32,
+    pub point_smooth: bool,
 }
 
 impl RenderState {
@@ -101,6 +252,17 @@ impl RenderState {
             depth_test: None,
             depth_write: true,
             color_mask: [true; 4],
+            polygon_offset: None,
+            alpha_test: None,
+            stencil_test: None,
+            stencil_writemask: u32::MAX,
+            blend: None,
+            logic_op: None,
+            dither: false,
+            line_width: 1.0,
+            line_smooth: false,
+            point_size: 1.0,
+            point_smooth: false,
         }
     }
 

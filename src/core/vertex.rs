@@ -188,6 +188,35 @@ impl Primitive {
             _ => {}
         }
     }
+
+    /// Calls `f` with the vertex numbers of every line segment the primitive assembles; the
+    /// second vertex is the provoking one.
+    pub fn for_each_line(self, ix: &Indices<'_>, mut f: impl FnMut(usize, usize)) {
+        let n = ix.len();
+        match self {
+            Primitive::Lines => {
+                for l in 0..n / 2 {
+                    f(ix.get(2 * l), ix.get(2 * l + 1));
+                }
+            }
+            Primitive::LineStrip | Primitive::LineLoop if n >= 2 => {
+                for l in 0..n - 1 {
+                    f(ix.get(l), ix.get(l + 1));
+                }
+                if self == Primitive::LineLoop {
+                    f(ix.get(n - 1), ix.get(0));
+                }
+            }
+            _ => {}
+        }
+    }
+
+    pub fn is_line(self) -> bool {
+        matches!(
+            self,
+            Primitive::Lines | Primitive::LineStrip | Primitive::LineLoop
+        )
+    }
 }
 
 /// Everything a draw call reads. Arrays that are disabled are `Constant` sources holding the
@@ -300,5 +329,23 @@ mod tests {
         Primitive::TriangleFan
             .for_each_triangle(&Indices::U8(&[7, 8, 9, 10]), |a, b, c| fan.push((a, b, c)));
         assert_eq!(fan, vec![(7, 8, 9), (7, 9, 10)]);
+    }
+
+    #[test]
+    fn lines_strips_and_loops_assemble_segments() {
+        let collect = |p: Primitive, n| {
+            let mut v = Vec::new();
+            p.for_each_line(&Indices::Range { first: 0, count: n }, |a, b| {
+                v.push((a, b))
+            });
+            v
+        };
+        assert_eq!(collect(Primitive::Lines, 5), vec![(0, 1), (2, 3)]);
+        assert_eq!(collect(Primitive::LineStrip, 3), vec![(0, 1), (1, 2)]);
+        assert_eq!(
+            collect(Primitive::LineLoop, 3),
+            vec![(0, 1), (1, 2), (2, 0)]
+        );
+        assert_eq!(collect(Primitive::LineLoop, 1), vec![]);
     }
 }

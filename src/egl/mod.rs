@@ -1,1 +1,14 @@
+//! EGL 1.4: the display, configs, surfaces (pbuffers, memory pixmaps and memory windows),
+//! contexts and the per-thread current binding, with the C entry points in `ffi`.
+//!
+//! Core logic lives in safe modules; `ffi` is the only place with `unsafe` code.
 
+pub mod config;
+pub mod context;
+pub mod display;
+pub mod ffi;
+pub mod native;
+pub mod surface;
+pub mod thread;
+pub mod tokens;
+pub mod types;

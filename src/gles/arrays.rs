@@ -2,7 +2,8 @@
 
 use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
-use super::context::{Context, MAX_TEXTURE_UNITS};
+use super::buffer::lock_objects;
+use super::context::{Context, SharedObjects, MAX_TEXTURE_UNITS};
 use super::ffi::client_bytes;
 use super::tokens::*;
 use super::types::*;
@@ -15,6 +16,9 @@ pub struct ArrayPointer {
     pub stride: i32,
     pub ptr: usize,
     pub enabled: bool,
+    /// The buffer object bound to `GL_ARRAY_BUFFER` when the pointer was set (0: none). With
+    /// one, `ptr` is a byte offset into it.
+    pub buffer: GLuint,
 }
 
 impl ArrayPointer {
@@ -25,6 +29,7 @@ impl ArrayPointer {
             stride: 0,
             ptr: 0,
             enabled: false,
+            buffer: 0,
         }
     }
 }
@@ -39,6 +44,24 @@ pub struct ClientArrays {
     pub client_active_texture: usize,
     /// The current color, used when the color array is disabled.
     pub color_value: [f32; 4],
+}
+
+impl ArrayPointer {
+    /// Whether the pointer names any data: a client address or a buffer object.
+    pub fn is_set(&self) -> bool {
+        self.ptr != 0 || self.buffer != 0
+    }
+}
+
+impl ClientArrays {
+    /// Runs `f` on every array pointer.
+    pub fn for_each_pointer(&mut self, mut f: impl FnMut(&mut ArrayPointer)) {
+        f(&mut self.vertex);
+        f(&mut self.color);
+        f(&mut self.normal);
+        self.texcoord.iter_mut().for_each(&mut f);
+        f(&mut self.point_size);
+    }
 }
 
 impl Default for ClientArrays {
@@ -60,6 +83,11 @@ impl Default for ClientArrays {
 pub enum ArrayKind {
     Vertex,
     Color,
+    Normal,
+    /// The client active texture unit's texture coordinates.
+    TexCoord,
+    /// OES_point_size_array.
+    PointSize,
 }
 
 fn component_type(ty: GLenum) -> Option<ComponentType> {
@@ -87,7 +115,8 @@ fn primitive(mode: GLenum) -> Option<Primitive> {
 }
 
 impl Context {
-    /// `glVertexPointer` / `glColorPointer`: type errors are `GL_INVALID_ENUM`, size and
+    /// `glVertexPointer`, `glColorPointer`, `glNormalPointer` (size 3), `glTexCoordPointer`,
+    /// `glPointSizePointerOES` (size 1): type errors are `GL_INVALID_ENUM`, size and
     /// stride errors `GL_INVALID_VALUE` (ES 1.1 §2.8).
     pub fn array_pointer(
         &mut self,
@@ -100,6 +129,9 @@ impl Context {
         let (sizes, types): (&[i32], &[GLenum]) = match kind {
             ArrayKind::Vertex => (&[2, 3, 4], &[GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT]),
             ArrayKind::Color => (&[4], &[GL_UNSIGNED_BYTE, GL_FIXED, GL_FLOAT]),
+            ArrayKind::Normal => (&[3], &[GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT]),
+            ArrayKind::TexCoord => (&[2, 3, 4], &[GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT]),
+            ArrayKind::PointSize => (&[1], &[GL_FIXED, GL_FLOAT]),
         };
         if !types.contains(&ty) {
             return self.set_error(GL_INVALID_ENUM);
@@ -110,11 +142,15 @@ impl Context {
         let a = match kind {
             ArrayKind::Vertex => &mut self.arrays.vertex,
             ArrayKind::Color => &mut self.arrays.color,
+            ArrayKind::Normal => &mut self.arrays.normal,
+            ArrayKind::TexCoord => &mut self.arrays.texcoord[self.arrays.client_active_texture],
+            ArrayKind::PointSize => &mut self.arrays.point_size,
         };
         a.size = size;
         a.ty = ty;
         a.stride = stride;
         a.ptr = ptr;
+        a.buffer = self.buffers.array;
     }
 
     pub fn client_state(&mut self, array: GLenum, on: bool) {
@@ -132,6 +168,9 @@ impl Context {
 
     pub fn color(&mut self, rgba: [f32; 4]) {
         self.arrays.color_value = rgba;
+        if self.enables.color_material {
+            self.lighting.track_color(rgba);
+        }
     }
 
     pub fn draw_arrays(&mut self, mode: GLenum, first: i32, count: i32) {
@@ -164,16 +203,21 @@ impl Context {
             return;
         };
         // Without a vertex array nothing is drawn (ES 1.1 §2.8).
-        if !self.arrays.vertex.enabled || self.arrays.vertex.ptr == 0 {
+        if !self.arrays.vertex.enabled || !self.arrays.vertex.is_set() {
             return;
         }
-        let Some(position) = array_view(&self.arrays.vertex, hi, false) else {
-            return self.set_error(GL_OUT_OF_MEMORY);
+        // Make room first: the frame must not flush while the share group is locked below.
+        self.with_frame(|_| ());
+        let shared = self.shared.clone();
+        let objects = lock_objects(&shared);
+        let position = match array_view(&objects, &self.arrays.vertex, hi, false) {
+            Ok(a) => a,
+            Err(e) => return self.array_error(e),
         };
-        let color = if self.arrays.color.enabled && self.arrays.color.ptr != 0 {
-            match array_view(&self.arrays.color, hi, true) {
-                Some(a) => AttribSource::Array(a),
-                None => return self.set_error(GL_OUT_OF_MEMORY),
+        let color = if self.arrays.color.enabled && self.arrays.color.is_set() {
+            match array_view(&objects, &self.arrays.color, hi, true) {
+                Ok(a) => AttribSource::Array(a),
+                Err(e) => return self.array_error(e),
             }
         } else {
             AttribSource::Constant(self.arrays.color_value)
@@ -191,24 +235,95 @@ impl Context {
     }
 }
 
-/// The client memory behind `a` for elements `0..=last`, or `None` when its size does not
-/// fit in the address space.
-fn array_view(a: &ArrayPointer, last: usize, normalized: bool) -> Option<AttribArray<'static>> {
-    let ty = component_type(a.ty)?;
+/// Why a draw cannot read an array.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ArrayError {
+    /// The array's extent does not fit in the address space (`GL_OUT_OF_MEMORY`).
+    TooLarge,
+    /// The elements lie (partly) outside their buffer object, or the buffer is gone: the
+    /// draw is skipped without an error, reading nothing.
+    OutOfRange,
+}
+
+impl Context {
+    fn array_error(&mut self, e: ArrayError) {
+        if e == ArrayError::TooLarge {
+            self.set_error(GL_OUT_OF_MEMORY);
+        }
+    }
+
+    /// `glDrawElements` with `GL_ELEMENT_ARRAY_BUFFER` bound: `count` indices of `size` bytes
+    /// (1 or 2) at byte `offset` of the buffer. Indices reaching past the buffer's end skip
+    /// the draw.
+    pub fn draw_elements_from_buffer(
+        &mut self,
+        mode: GLenum,
+        count: usize,
+        size: usize,
+        offset: usize,
+    ) {
+        let Some(prim) = primitive(mode) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        let bytes = {
+            let objects = lock_objects(&self.shared);
+            let range = count.checked_mul(size).and_then(|len| {
+                objects
+                    .buffers
+                    .get(self.buffers.element_array)?
+                    .range(offset, len)
+            });
+            match range {
+                Some(b) => b.to_vec(),
+                None => return,
+            }
+        };
+        if size == 1 {
+            self.draw(prim, Indices::U8(&bytes));
+        } else {
+            let shorts: Vec<u16> = bytes
+                .chunks_exact(2)
+                .map(|b| u16::from_ne_bytes([b[0], b[1]]))
+                .collect();
+            self.draw(prim, Indices::U16(&shorts));
+        }
+    }
+}
+
+/// The memory behind `a` for elements `0..=last`: a range of its buffer object, or client
+/// memory.
+fn array_view<'a>(
+    objects: &'a SharedObjects,
+    a: &ArrayPointer,
+    last: usize,
+    normalized: bool,
+) -> Result<AttribArray<'a>, ArrayError> {
+    let ty = component_type(a.ty).ok_or(ArrayError::OutOfRange)?;
     let size = a.size as usize;
     let stride = if a.stride == 0 {
         size * ty.size()
     } else {
         a.stride as usize
     };
-    let len = last.checked_mul(stride)?.checked_add(size * ty.size())?;
-    if a.ptr.checked_add(len).is_none() || len > isize::MAX as usize {
-        return None;
-    }
-    // SAFETY: the application promised, when it passed this pointer to gl*Pointer, that it
-    // stays valid for every element the draw calls read; `len` covers exactly those.
-    let data = unsafe { client_bytes(a.ptr, len) };
-    Some(AttribArray {
+    let len = last
+        .checked_mul(stride)
+        .and_then(|l| l.checked_add(size * ty.size()))
+        .ok_or(ArrayError::TooLarge)?;
+    let data = if a.buffer != 0 {
+        let buffer = objects
+            .buffers
+            .get(a.buffer)
+            .ok_or(ArrayError::OutOfRange)?;
+        buffer.range(a.ptr, len).ok_or(ArrayError::OutOfRange)?
+    } else {
+        if a.ptr.checked_add(len).is_none() || len > isize::MAX as usize {
+            return Err(ArrayError::TooLarge);
+        }
+        // SAFETY: the application promised, when it passed this pointer to gl*Pointer, that
+        // it stays valid for every element the draw calls read; `len` covers exactly those.
+        unsafe { client_bytes(a.ptr, len) }
+    };
+    Ok(AttribArray {
         data,
         ty,
         size,

@@ -12,6 +12,13 @@ use crate::core::{
 };
 
 use super::arrays::ClientArrays;
+use super::clip_planes::ClipPlanes;
+use super::current_values::CurrentValues;
+use super::fog::Fog;
+use super::lighting::Lighting;
+use super::per_fragment::FragmentState;
+use super::raster_state::PointLineState;
+use super::texenv::TexEnv;
 use super::tokens::*;
 use super::types::*;
 
@@ -25,10 +32,12 @@ pub trait Surface: Send + Sync {
     fn rendering_complete(&self) {}
 }
 
-/// Objects shared between the contexts of one share group (textures and buffer objects
-/// arrive with their own modules; the group already exists so sharing is decided at creation).
+/// Objects shared between the contexts of one share group: texture and buffer objects.
 #[derive(Default)]
-pub struct SharedObjects {}
+pub struct SharedObjects {
+    pub textures: super::texture::TextureNames,
+    pub buffers: super::buffer::BufferNames,
+}
 
 pub const MAX_TEXTURE_UNITS: usize = 2;
 pub const MAX_LIGHTS: usize = 8;
@@ -153,6 +162,17 @@ pub struct Context {
     pub(super) unpack_alignment: usize,
     pub(super) hints: Hints,
     pub(super) arrays: ClientArrays,
+    /// Current normal and texture coordinates.
+    pub(super) current: CurrentValues,
+    /// Alpha, stencil, blend, logic op, sample coverage and polygon offset state.
+    pub(super) fragment: FragmentState,
+    pub(super) points_lines: PointLineState,
+    pub(super) clip_planes: ClipPlanes,
+    pub(super) lighting: Lighting,
+    pub(super) fog: Fog,
+    pub(super) texenv: TexEnv,
+    pub(super) textures: super::texture::TextureUnits,
+    pub(super) buffers: super::buffer::BufferBindings,
     /// Work recorded for the draw surface and not yet rasterized.
     pub(super) frame: Option<Frame>,
 }
@@ -204,6 +224,15 @@ impl Context {
                 generate_mipmap: GL_DONT_CARE,
             },
             arrays: ClientArrays::default(),
+            current: CurrentValues::default(),
+            fragment: FragmentState::default(),
+            points_lines: PointLineState::default(),
+            clip_planes: ClipPlanes::default(),
+            lighting: Lighting::default(),
+            fog: Fog::default(),
+            texenv: TexEnv::default(),
+            textures: Default::default(),
+            buffers: Default::default(),
             frame: None,
         }
     }
@@ -306,12 +335,15 @@ impl Context {
             depth_test: e.depth_test.then_some(self.depth_func),
             depth_write: self.depth_mask,
             color_mask: self.color_mask,
+            stencil_writemask: self.stencil_writemask,
+            dither: e.dither,
+            ..RenderState::new(self.viewport.width, self.viewport.height)
         }
     }
 }
 
 /// Locks a surface's target, recovering from a lock poisoned by a caught panic.
-pub(super) fn lock_target(s: &dyn Surface) -> MutexGuard<'_, Target> {
+pub fn lock_target(s: &dyn Surface) -> MutexGuard<'_, Target> {
     s.target().lock().unwrap_or_else(|e| e.into_inner())
 }
 

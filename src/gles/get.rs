@@ -31,7 +31,7 @@ pub struct Value {
 }
 
 impl Value {
-    fn new(kind: Kind, values: &[f64]) -> Value {
+    pub(crate) fn new(kind: Kind, values: &[f64]) -> Value {
         let mut data = [0.0; 16];
         data[..values.len()].copy_from_slice(values);
         Value {
@@ -40,25 +40,25 @@ impl Value {
             data,
         }
     }
-    fn ints(v: &[i64]) -> Value {
+    pub(crate) fn ints(v: &[i64]) -> Value {
         Value::new(Kind::Int, &v.iter().map(|&x| x as f64).collect::<Vec<_>>())
     }
-    fn int(v: i64) -> Value {
+    pub(crate) fn int(v: i64) -> Value {
         Value::ints(&[v])
     }
-    fn floats(v: &[f32]) -> Value {
+    pub(crate) fn floats(v: &[f32]) -> Value {
         Value::new(
             Kind::Float,
             &v.iter().map(|&x| x as f64).collect::<Vec<_>>(),
         )
     }
-    fn norm(v: &[f32]) -> Value {
+    pub(crate) fn norm(v: &[f32]) -> Value {
         Value::new(
             Kind::Normalized,
             &v.iter().map(|&x| x as f64).collect::<Vec<_>>(),
         )
     }
-    fn bools(v: &[bool]) -> Value {
+    pub(crate) fn bools(v: &[bool]) -> Value {
         Value::new(
             Kind::Bool,
             &v.iter()
@@ -108,7 +108,8 @@ pub const RENDERER: &[u8] = b"gles-cm software rasterizer\0";
 pub const VERSION: &[u8] =
     concat!("OpenGL ES-CM 1.1 gles-cm-", env!("CARGO_PKG_VERSION"), "\0").as_bytes();
 /// Exactly the extensions that are implemented, space-separated.
-pub const EXTENSIONS: &[u8] = b"GL_OES_read_format\0";
+pub const EXTENSIONS: &[u8] =
+    b"GL_OES_read_format GL_OES_compressed_paletted_texture GL_OES_mapbuffer\0";
 
 impl Context {
     /// The NUL-terminated string for `glGetString`, or `None` for an invalid name.
@@ -131,6 +132,17 @@ impl Context {
         let unit = self.active_texture;
         if let Some(flag) = self.enables.flag(pname, unit) {
             return Some(Value::bools(&[*flag]));
+        }
+        if let Some(v) = self
+            .fragment_value(pname)
+            .or_else(|| self.points_lines_value(pname))
+            .or_else(|| self.lighting_value(pname))
+            .or_else(|| self.fog_value(pname))
+            .or_else(|| self.current_values_value(pname))
+            .or_else(|| self.texture_value(pname))
+            .or_else(|| self.buffer_value(pname))
+        {
+            return Some(v);
         }
         let bits = self.draw_format().map(|f| {
             let c = f.color.bits();

@@ -13,11 +13,19 @@ impl Context {
         let unit = self.active_texture;
         match self.enables.flag(cap, unit) {
             Some(flag) => *flag = on,
-            None => self.set_error(GL_INVALID_ENUM),
+            None => return self.set_error(GL_INVALID_ENUM),
+        }
+        // While enabled, the material's ambient and diffuse colors track the current color.
+        if cap == GL_COLOR_MATERIAL && on {
+            self.lighting.track_color(self.arrays.color_value);
         }
     }
 
     pub fn is_enabled(&mut self, cap: GLenum) -> bool {
+        // glIsEnabled also answers for the client-side arrays (ES 1.1 §6.1.1).
+        if let Some(on) = self.client_array_enabled(cap) {
+            return on;
+        }
         let unit = self.active_texture;
         match self.enables.flag(cap, unit) {
             Some(flag) => *flag,

@@ -11,10 +11,12 @@
 use glam::DVec4;
 
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
-use super::target::{keep_mask, Target};
-use super::vertex::DrawCall;
+use super::target::Target;
+use super::vertex::{DrawCall, Primitive};
 
 mod compare;
+mod fragment;
+mod lines_points;
 pub use compare::{compare, ErrorStats};
 
 #[derive(Clone, Copy, Debug)]
@@ -69,18 +71,76 @@ pub fn render(state: &RenderState, draw: &DrawCall<'_>, target: &mut Target) {
         pos: mvp * DVec4::from_array(draw.position.fetch(i).map(f64::from)),
         color: DVec4::from_array(draw.color.fetch(i).map(f64::from)).clamp(DVec4::ZERO, DVec4::ONE),
     };
-    draw.primitive.for_each_triangle(&draw.indices, |a, b, c| {
-        let provoking = fetch(c);
-        let poly = clip(vec![fetch(a), fetch(b), provoking]);
-        for i in 1..poly.len().saturating_sub(1) {
-            triangle(
-                state,
-                [poly[0], poly[i], poly[i + 1]],
-                provoking.color,
-                target,
-            );
+    let prim = draw.primitive;
+    if prim == Primitive::Points {
+        for k in 0..draw.indices.len() {
+            let v = fetch(draw.indices.get(k));
+            let p = v.pos;
+            let inside = [
+                p.w + p.x,
+                p.w - p.x,
+                p.w + p.y,
+                p.w - p.y,
+                p.w + p.z,
+                p.w - p.z,
+            ]
+            .iter()
+            .all(|&d| d >= 0.0)
+                && p.w > 0.0;
+            if inside {
+                lines_points::point(state, &v, target);
+            }
         }
-    });
+    } else if prim.is_line() {
+        prim.for_each_line(&draw.indices, |a, b| {
+            let (va, vb) = (fetch(a), fetch(b));
+            if let Some((ca, cb)) = clip_line(va, vb) {
+                lines_points::line(state, &ca, &cb, vb.color, target);
+            }
+        });
+    } else {
+        prim.for_each_triangle(&draw.indices, |a, b, c| {
+            let provoking = fetch(c);
+            let poly = clip(vec![fetch(a), fetch(b), provoking]);
+            for i in 1..poly.len().saturating_sub(1) {
+                triangle(
+                    state,
+                    [poly[0], poly[i], poly[i + 1]],
+                    provoking.color,
+                    target,
+                );
+            }
+        });
+    }
+}
+
+/// Clips a segment against the clip volume and w > 0 by the parameter range inside every
+/// plane.
+fn clip_line(a: Vtx, b: Vtx) -> Option<(Vtx, Vtx)> {
+    let d = |p: DVec4| {
+        [
+            p.w + p.x,
+            p.w - p.x,
+            p.w + p.y,
+            p.w - p.y,
+            p.w + p.z,
+            p.w - p.z,
+            p.w - 1e-300,
+        ]
+    };
+    let (da, db) = (d(a.pos), d(b.pos));
+    let (mut t0, mut t1) = (0f64, 1f64);
+    for i in 0..7 {
+        if da[i] < 0.0 && db[i] < 0.0 {
+            return None;
+        }
+        if da[i] < 0.0 {
+            t0 = t0.max(da[i] / (da[i] - db[i]));
+        } else if db[i] < 0.0 {
+            t1 = t1.min(da[i] / (da[i] - db[i]));
+        }
+    }
+    (t0 <= t1).then(|| (lerp(&a, &b, t0), lerp(&a, &b, t1)))
 }
 
 fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Target) {
@@ -118,11 +178,38 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
         let (dx, dy) = ((win[b].0 - win[a].0) * sign, (win[b].1 - win[a].1) * sign);
         dy < 0.0 || (dy == 0.0 && dx < 0.0)
     };
-    let bounds = state.pixel_bounds(target.bounds());
+    // Only pixels whose centers can lie inside: the rest could not pass the edge tests.
+    let (lo_x, hi_x) = win
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(l, h), w| (l.min(w.0), h.max(w.0)));
+    let (lo_y, hi_y) = win
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(l, h), w| (l.min(w.1), h.max(w.1)));
+    let to_px = |v: f64| v.clamp(i32::MIN as f64, i32::MAX as f64) as i32;
+    let bounds = state
+        .pixel_bounds(target.bounds())
+        .intersect(super::target::Rect {
+            x0: to_px((lo_x - 0.5).floor()),
+            y0: to_px((lo_y - 0.5).floor()),
+            x1: to_px((hi_x + 0.5).ceil()),
+            y1: to_px((hi_y + 0.5).ceil()),
+        });
     let width = target.width() as usize;
     let format = target.format();
-    let keep = keep_mask(state.color_mask);
-    let (colors, depths, _) = target.buffers_mut();
+    // Polygon offset from the exact window-space depth slopes of the unsnapped triangle.
+    let offset = match (state.polygon_offset, format.depth) {
+        (Some(o), Some(df)) => {
+            let dzdx = ((win[1].2 - win[0].2) * (win[2].1 - win[0].1)
+                - (win[2].2 - win[0].2) * (win[1].1 - win[0].1))
+                / area;
+            let dzdy = ((win[2].2 - win[0].2) * (win[1].0 - win[0].0)
+                - (win[1].2 - win[0].2) * (win[2].0 - win[0].0))
+                / area;
+            o.factor as f64 * dzdx.abs().max(dzdy.abs()) + o.units as f64 / df.max() as f64
+        }
+        _ => 0.0,
+    };
+    let (colors, depths, stencils) = target.buffers_mut();
     for y in bounds.y0..bounds.y1 {
         for x in bounds.x0..bounds.x1 {
             let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
@@ -139,15 +226,7 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
             }
             let b = e.map(|v| v / (area * sign));
             let at = y as usize * width + x as usize;
-            if let (Some(func), Some(df)) = (state.depth_test, format.depth) {
-                let z = df.quantize(b[0] * win[0].2 + b[1] * win[1].2 + b[2] * win[2].2);
-                if !func.test(z, depths[at]) {
-                    continue;
-                }
-                if state.depth_write {
-                    depths[at] = z;
-                }
-            }
+            let z = b[0] * win[0].2 + b[1] * win[1].2 + b[2] * win[2].2 + offset;
             let color = if state.shade_model == ShadeModel::Flat {
                 flat_color
             } else {
@@ -157,8 +236,12 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
                     + v[2].color * (b[2] * win[2].3))
                     / q
             };
-            let word = format.color.encode(color.as_vec4().to_array());
-            colors[at] = (colors[at] & keep) | (word & !keep);
+            let pixel = fragment::Pixel {
+                color: &mut colors[at],
+                depth: depths.get_mut(at),
+                stencil: stencils.get_mut(at),
+            };
+            fragment::process(state, format, x, y, color, z, pixel);
         }
     }
 }

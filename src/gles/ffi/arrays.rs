@@ -70,6 +70,10 @@ pub unsafe extern "C" fn glDrawElements(
         if count < 0 {
             return c.set_error(GL_INVALID_VALUE);
         }
+        if c.buffers.element_array != 0 {
+            // With an element buffer bound, `indices` is a byte offset into it.
+            return c.draw_elements_from_buffer(mode, count as usize, size, indices as usize);
+        }
         if indices.is_null() || count == 0 {
             // Still validate the mode, as a draw of nothing must.
             return c.draw_elements(mode, Indices::Range { first: 0, count: 0 });

@@ -10,14 +10,32 @@ use super::current;
 use super::tokens::GL_OUT_OF_MEMORY;
 
 mod arrays;
+mod buffer;
+mod clip_planes;
+mod current_values;
+mod fog;
 mod framebuffer;
+mod lighting;
 mod matrix;
+mod per_fragment;
+mod points_lines;
 mod state;
+mod texenv;
+mod texture;
 
 pub use arrays::*;
+pub use buffer::*;
+pub use clip_planes::*;
+pub use current_values::*;
+pub use fog::*;
 pub use framebuffer::*;
+pub use lighting::*;
 pub use matrix::*;
+pub use per_fragment::*;
+pub use points_lines::*;
 pub use state::*;
+pub use texenv::*;
+pub use texture::*;
 
 /// Runs `f` on the calling thread's current context. Without one the call does nothing and
 /// returns `default`. A panic inside is caught here, never crossing into C, and reported as
@@ -58,6 +76,22 @@ pub(crate) unsafe fn read_array<T: Copy, const N: usize>(p: *const T) -> Option<
     }
     // SAFETY: non-null and, by the caller's contract, N readable values.
     Some(unsafe { std::ptr::read_unaligned(p as *const [T; N]) })
+}
+
+/// Reads `n` values from a C array argument, or `None` for a null pointer.
+///
+/// # Safety
+/// A non-null `p` must point to at least `n` readable values.
+pub(crate) unsafe fn read_slice<T: Copy>(p: *const T, n: usize) -> Option<Vec<T>> {
+    if p.is_null() {
+        return None;
+    }
+    // SAFETY: non-null and, by the caller's contract, n readable values.
+    Some(
+        (0..n)
+            .map(|i| unsafe { p.add(i).read_unaligned() })
+            .collect(),
+    )
 }
 
 /// Writes query results to a C array argument, ignoring a null pointer.

@@ -1,26 +1,19 @@
-//! Rasterization: which pixels a primitive covers, delivered as horizontal spans.
+//! Triangle coverage: pixel centers inside the edge functions, with the top-left rule.
 
-use super::setup::Triangle;
-use super::target::Rect;
-
-/// A run of covered pixels `x0 <= x < x1` on row `y`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Span {
-    pub y: i32,
-    pub x0: i32,
-    pub x1: i32,
-}
+use super::super::setup::Triangle;
+use super::super::target::Rect;
+use super::Span;
 
 /// Calls `emit` for every run of pixels on rows `rows` whose centers `t` covers under the
 /// top-left rule.
-pub fn triangle(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span)) {
+pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span)) {
     let Rect { x0, x1, .. } = t.bbox;
     let (y0, y1) = (t.bbox.y0.max(rows.start), t.bbox.y1.min(rows.end));
-    let (ox, oy) = t.origin;
+    let (ox, oy) = t.shading.origin;
     for y in y0..y1 {
         let ry = (y - oy) as i64;
         let mut e = t.edges.map(|e| e.at_center((x0 - ox) as i64, ry) - e.bias);
-        let step = t.edges.map(|e| e.a << super::SUBPIXEL_BITS);
+        let step = t.edges.map(|e| e.a << super::super::SUBPIXEL_BITS);
         let mut start = None;
         for x in x0..x1 {
             let inside = e[0] >= 0 && e[1] >= 0 && e[2] >= 0;

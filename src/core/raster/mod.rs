@@ -1,0 +1,83 @@
+//! Rasterization: which pixels a primitive covers, delivered as horizontal spans, each
+//! primitive kind with the coverage rules of ES 1.1 chapter 3.
+
+pub mod line;
+pub mod point;
+pub mod triangle;
+
+use super::setup::{Shading, Triangle};
+use super::target::Rect;
+
+pub use line::Line;
+pub use point::Point;
+
+/// The largest aliased and antialiased line width and point size.
+pub const MAX_LINE_WIDTH: f32 = 64.0;
+pub const MAX_POINT_SIZE: f32 = 64.0;
+
+/// A run of pixels `x0 <= x < x1` on row `y` that a primitive produces fragments for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Span {
+    pub y: i32,
+    pub x0: i32,
+    pub x1: i32,
+}
+
+/// A primitive ready to rasterize.
+#[derive(Clone, Debug)]
+pub enum Prim {
+    Triangle(Triangle),
+    Line(Line),
+    Point(Point),
+}
+
+impl Prim {
+    /// The pixels the primitive may produce fragments for.
+    pub fn bbox(&self) -> Rect {
+        match self {
+            Prim::Triangle(t) => t.bbox,
+            Prim::Line(l) => l.bbox,
+            Prim::Point(p) => p.bbox,
+        }
+    }
+
+    pub fn shading(&self) -> &Shading {
+        match self {
+            Prim::Triangle(t) => &t.shading,
+            Prim::Line(l) => &l.shading,
+            Prim::Point(p) => &p.shading,
+        }
+    }
+
+    /// Calls `emit` for every span of the primitive on rows `rows`.
+    pub fn spans(&self, rows: std::ops::Range<i32>, emit: impl FnMut(Span)) {
+        match self {
+            Prim::Triangle(t) => triangle::spans(t, rows, emit),
+            Prim::Line(l) => l.spans(rows, emit),
+            Prim::Point(p) => p.spans(rows, emit),
+        }
+    }
+}
+
+/// Window coordinates of a clip-space position, snapped to the subpixel grid like triangle
+/// vertices, with depth mapped by the depth range. `None` for a w the clipper removes.
+pub(crate) fn window(
+    state: &super::state::RenderState,
+    pos: glam::Vec4,
+) -> Option<(f64, f64, f64, f64)> {
+    let w = pos.w as f64;
+    // NaN fails this too.
+    if w.is_nan() || w < super::clip::W_MIN as f64 {
+        return None;
+    }
+    let vp = state.viewport;
+    let inv_w = 1.0 / w;
+    let snap = |v: f64| {
+        (v * (1 << super::SUBPIXEL_BITS) as f64).round() / (1 << super::SUBPIXEL_BITS) as f64
+    };
+    let [n, f] = state.depth_range.map(f64::from);
+    let x = (pos.x as f64 * inv_w + 1.0) * 0.5 * vp.width as f64 + vp.x as f64;
+    let y = (pos.y as f64 * inv_w + 1.0) * 0.5 * vp.height as f64 + vp.y as f64;
+    let z = (pos.z as f64 * inv_w) * (f - n) * 0.5 + (f + n) * 0.5;
+    Some((snap(x), snap(y), z.clamp(0.0, 1.0), inv_w))
+}

@@ -1,0 +1,686 @@
+//! Texture objects: sampler parameters, mip chains of RGBA8 texels, pixel unpacking, mipmap
+//! generation and the `OES_compressed_paletted_texture` decoder. Plain Rust: the GL layer
+//! (`gles/texture.rs`) validates enums and sizes and calls in here.
+//!
+//! Every level keeps its base format (what GL reports and what texture environments combine
+//! with) and its texels expanded to RGBA8 words (`[r, g, b, a]` bytes, little-endian `u32`,
+//! as [`super::Target`] stores color): L → (L, L, L, 255), A → (0, 0, 0, A),
+//! LA → (L, L, L, A), RGB → (R, G, B, 255). Packed 16-bit types widen by bit replication
+//! ([`super::target::expand_to_8`]), so 5-bit 31 is 255 and 4-bit 8 is 0x88. Row 0 is the
+//! first row the application gave (t = 0).
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use super::target::expand_to_8;
+
+/// The largest width and height of a level-0 image (`GL_MAX_TEXTURE_SIZE`).
+pub const MAX_TEXTURE_SIZE: u32 = 2048;
+/// log2([`MAX_TEXTURE_SIZE`]): the largest mipmap level number.
+pub const MAX_LEVEL: usize = 11;
+
+/// The base internal formats of OpenGL ES 1.1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BaseFormat {
+    Alpha,
+    Luminance,
+    LuminanceAlpha,
+    Rgb,
+    Rgba,
+}
+
+impl BaseFormat {
+    /// Components per texel in client memory with `GL_UNSIGNED_BYTE`.
+    pub fn components(self) -> usize {
+        match self {
+            BaseFormat::Alpha | BaseFormat::Luminance => 1,
+            BaseFormat::LuminanceAlpha => 2,
+            BaseFormat::Rgb => 3,
+            BaseFormat::Rgba => 4,
+        }
+    }
+
+    pub fn has_alpha(self) -> bool {
+        matches!(
+            self,
+            BaseFormat::Alpha | BaseFormat::LuminanceAlpha | BaseFormat::Rgba
+        )
+    }
+
+    pub fn has_color(self) -> bool {
+        !matches!(self, BaseFormat::Alpha)
+    }
+}
+
+/// The client pixel types of OpenGL ES 1.1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PixelType {
+    UnsignedByte,
+    UnsignedShort565,
+    UnsignedShort4444,
+    UnsignedShort5551,
+}
+
+impl PixelType {
+    /// Bytes per pixel of `format` in this type, or `None` when the pair is not allowed
+    /// (packed types go with exactly one format).
+    pub fn pixel_size(self, format: BaseFormat) -> Option<usize> {
+        match (self, format) {
+            (PixelType::UnsignedByte, f) => Some(f.components()),
+            (PixelType::UnsignedShort565, BaseFormat::Rgb) => Some(2),
+            (PixelType::UnsignedShort4444 | PixelType::UnsignedShort5551, BaseFormat::Rgba) => {
+                Some(2)
+            }
+            _ => None,
+        }
+    }
+}
+
+/// The byte layout of an unpacked client image: `row_stride` bytes from one row to the next
+/// (the unpack alignment applied), `len` bytes in all.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelRect {
+    pub width: usize,
+    pub height: usize,
+    pub pixel_size: usize,
+    pub row_stride: usize,
+    pub len: usize,
+}
+
+impl PixelRect {
+    /// The layout of a `width` × `height` image, rows padded to `alignment` (1, 2, 4 or 8).
+    /// `None` when it does not fit in memory.
+    pub fn new(width: usize, height: usize, pixel_size: usize, alignment: usize) -> Option<Self> {
+        let row = width.checked_mul(pixel_size)?;
+        let row_stride = row.checked_add(alignment - 1)? / alignment * alignment;
+        let len = if width == 0 || height == 0 {
+            0
+        } else {
+            row_stride.checked_mul(height - 1)?.checked_add(row)?
+        };
+        Some(PixelRect {
+            width,
+            height,
+            pixel_size,
+            row_stride,
+            len,
+        })
+    }
+}
+
+fn word(r: u8, g: u8, b: u8, a: u8) -> u32 {
+    u32::from_le_bytes([r, g, b, a])
+}
+
+/// Converts one client pixel to an RGBA8 word.
+fn unpack_pixel(format: BaseFormat, ty: PixelType, p: &[u8]) -> u32 {
+    let short = || u16::from_ne_bytes([p[0], p[1]]) as u32;
+    match ty {
+        PixelType::UnsignedByte => match format {
+            BaseFormat::Alpha => word(0, 0, 0, p[0]),
+            BaseFormat::Luminance => word(p[0], p[0], p[0], 255),
+            BaseFormat::LuminanceAlpha => word(p[0], p[0], p[0], p[1]),
+            BaseFormat::Rgb => word(p[0], p[1], p[2], 255),
+            BaseFormat::Rgba => word(p[0], p[1], p[2], p[3]),
+        },
+        PixelType::UnsignedShort565 => unpack_565(short()),
+        PixelType::UnsignedShort4444 => unpack_4444(short()),
+        PixelType::UnsignedShort5551 => unpack_5551(short()),
+    }
+}
+
+fn unpack_565(v: u32) -> u32 {
+    word(
+        expand_to_8(v >> 11, 5),
+        expand_to_8((v >> 5) & 63, 6),
+        expand_to_8(v & 31, 5),
+        255,
+    )
+}
+
+fn unpack_4444(v: u32) -> u32 {
+    word(
+        expand_to_8(v >> 12, 4),
+        expand_to_8((v >> 8) & 15, 4),
+        expand_to_8((v >> 4) & 15, 4),
+        expand_to_8(v & 15, 4),
+    )
+}
+
+fn unpack_5551(v: u32) -> u32 {
+    word(
+        expand_to_8(v >> 11, 5),
+        expand_to_8((v >> 6) & 31, 5),
+        expand_to_8((v >> 1) & 31, 5),
+        expand_to_8(v & 1, 1),
+    )
+}
+
+/// Unpacks a client image laid out as `rect` (`data` holds at least `rect.len` bytes) into
+/// RGBA8 words, row 0 first.
+pub fn unpack(format: BaseFormat, ty: PixelType, rect: PixelRect, data: &[u8]) -> Vec<u32> {
+    let mut out = Vec::with_capacity(rect.width * rect.height);
+    for y in 0..rect.height {
+        let row = &data[y * rect.row_stride..][..rect.width * rect.pixel_size];
+        out.extend(
+            row.chunks_exact(rect.pixel_size)
+                .map(|p| unpack_pixel(format, ty, p)),
+        );
+    }
+    out
+}
+
+/// Forces a word to what `format` keeps: components the format lacks read as GL defines
+/// them for that base format (used when a color buffer is copied into a texture).
+pub fn convert_word(format: BaseFormat, w: u32) -> u32 {
+    let [r, g, b, a] = w.to_le_bytes();
+    match format {
+        BaseFormat::Alpha => word(0, 0, 0, a),
+        BaseFormat::Luminance => word(r, r, r, 255),
+        BaseFormat::LuminanceAlpha => word(r, r, r, a),
+        BaseFormat::Rgb => word(r, g, b, 255),
+        BaseFormat::Rgba => w,
+    }
+}
+
+/// One mipmap level.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub format: BaseFormat,
+    /// `width * height` RGBA8 words, row 0 first.
+    pub texels: Vec<u32>,
+}
+
+impl Image {
+    /// An image of `format` filled with the expansion of zero bytes (the contents of a level
+    /// specified without data are undefined; zeros keep them deterministic).
+    pub fn blank(width: u32, height: u32, format: BaseFormat) -> Image {
+        let zero = unpack_pixel(format, PixelType::UnsignedByte, &[0; 4]);
+        Image {
+            width,
+            height,
+            format,
+            texels: vec![zero; width as usize * height as usize],
+        }
+    }
+
+    pub fn texel(&self, x: u32, y: u32) -> [u8; 4] {
+        self.texels[(y * self.width + x) as usize].to_le_bytes()
+    }
+
+    /// The next smaller mipmap level: a box filter over 2 × 2 texels (2 × 1 or 1 × 2 once a
+    /// side is 1), each channel the rounded mean `(sum + n/2) / n`.
+    pub fn half(&self) -> Image {
+        let (w, h) = ((self.width / 2).max(1), (self.height / 2).max(1));
+        let sx = if self.width > 1 { 2 } else { 1 };
+        let sy = if self.height > 1 { 2 } else { 1 };
+        let n = sx * sy;
+        let mut texels = Vec::with_capacity(w as usize * h as usize);
+        for y in 0..h {
+            for x in 0..w {
+                let mut sum = [0u32; 4];
+                for dy in 0..sy {
+                    for dx in 0..sx {
+                        let t = self.texel(x * sx + dx, y * sy + dy);
+                        for c in 0..4 {
+                            sum[c] += t[c] as u32;
+                        }
+                    }
+                }
+                let m = sum.map(|s| ((s + n / 2) / n) as u8);
+                texels.push(u32::from_le_bytes(m));
+            }
+        }
+        Image {
+            width: w,
+            height: h,
+            format: self.format,
+            texels,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MinFilter {
+    Nearest,
+    Linear,
+    NearestMipmapNearest,
+    LinearMipmapNearest,
+    NearestMipmapLinear,
+    LinearMipmapLinear,
+}
+
+impl MinFilter {
+    pub fn uses_mipmaps(self) -> bool {
+        !matches!(self, MinFilter::Nearest | MinFilter::Linear)
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MagFilter {
+    Nearest,
+    Linear,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Wrap {
+    Repeat,
+    ClampToEdge,
+}
+
+/// A source of generations: every change to any texture takes a new number, so a
+/// (texture, version) pair seen once never reappears after a change, deletion or reuse.
+static GENERATION: AtomicU64 = AtomicU64::new(1);
+
+fn next_generation() -> u64 {
+    GENERATION.fetch_add(1, Ordering::Relaxed)
+}
+
+/// A 2D texture object.
+#[derive(Clone, Debug)]
+pub struct Texture {
+    pub min_filter: MinFilter,
+    pub mag_filter: MagFilter,
+    pub wrap_s: Wrap,
+    pub wrap_t: Wrap,
+    pub generate_mipmap: bool,
+    /// `OES_draw_texture`'s crop rectangle: u, v, width, height in texels.
+    pub crop_rect: [i32; 4],
+    /// Levels 0 ..= [`MAX_LEVEL`]; `None` where none has been specified.
+    levels: Vec<Option<Image>>,
+    version: u64,
+}
+
+impl Default for Texture {
+    fn default() -> Texture {
+        Texture::new()
+    }
+}
+
+impl Texture {
+    /// A texture with the initial state of the specification: no images,
+    /// NEAREST_MIPMAP_LINEAR / LINEAR filters, REPEAT wrapping, no mipmap generation.
+    pub fn new() -> Texture {
+        Texture {
+            min_filter: MinFilter::NearestMipmapLinear,
+            mag_filter: MagFilter::Linear,
+            wrap_s: Wrap::Repeat,
+            wrap_t: Wrap::Repeat,
+            generate_mipmap: false,
+            crop_rect: [0; 4],
+            levels: vec![None; MAX_LEVEL + 1],
+            version: next_generation(),
+        }
+    }
+
+    /// Changes whenever anything about the texture (images or parameters) changes.
+    pub fn version(&self) -> u64 {
+        self.version
+    }
+
+    /// Records a change made through the public parameter fields.
+    pub fn touch(&mut self) {
+        self.version = next_generation();
+    }
+
+    pub fn level(&self, level: usize) -> Option<&Image> {
+        self.levels.get(level)?.as_ref()
+    }
+
+    /// Replaces `level` (≤ [`MAX_LEVEL`]) with `image`. With [`Texture::generate_mipmap`] set,
+    /// a new level 0 also regenerates the whole chain below it.
+    pub fn set_level(&mut self, level: usize, image: Image) {
+        self.levels[level] = Some(image);
+        if level == 0 && self.generate_mipmap {
+            self.generate_mipmaps();
+        }
+        self.touch();
+    }
+
+    /// Removes every level (for `eglReleaseTexImage`).
+    pub fn clear_levels(&mut self) {
+        self.levels.iter_mut().for_each(|l| *l = None);
+        self.touch();
+    }
+
+    /// Writes `texels` (`w * h` words, row 0 first) at (x, y) of `level`, which exists and
+    /// contains the rectangle (the caller checked). Texels are converted to the level's base
+    /// format. Regenerates the chain as [`Texture::set_level`] does.
+    pub fn write_region(&mut self, level: usize, x: u32, y: u32, w: u32, h: u32, texels: &[u32]) {
+        let img = self.levels[level]
+            .as_mut()
+            .expect("caller checked the level");
+        for row in 0..h {
+            let dst = ((y + row) * img.width + x) as usize;
+            let src = (row * w) as usize;
+            for i in 0..w as usize {
+                img.texels[dst + i] = convert_word(img.format, texels[src + i]);
+            }
+        }
+        if level == 0 && self.generate_mipmap {
+            self.generate_mipmaps();
+        }
+        self.touch();
+    }
+
+    /// Replaces levels 1 ..= log2(max(width, height)) with box-filtered reductions of level
+    /// 0 (see [`Image::half`]); deeper levels are removed.
+    pub fn generate_mipmaps(&mut self) {
+        let Some(mut img) = self.levels[0].clone() else {
+            return;
+        };
+        if img.width == 0 || img.height == 0 {
+            // An empty base image has no chain.
+            self.levels[1..].iter_mut().for_each(|l| *l = None);
+            self.touch();
+            return;
+        }
+        for l in 1..=MAX_LEVEL {
+            if img.width == 1 && img.height == 1 {
+                self.levels[l] = None;
+                continue;
+            }
+            img = img.half();
+            self.levels[l] = Some(img.clone());
+        }
+        self.touch();
+    }
+
+    /// Whether the texture is mipmap-complete: level 0 exists and levels 1 ..= p halve it
+    /// with the same base format.
+    pub fn mipmap_complete(&self) -> bool {
+        let Some(base) = self.level(0) else {
+            return false;
+        };
+        let (mut w, mut h) = (base.width, base.height);
+        let mut l = 0;
+        while w > 1 || h > 1 {
+            (w, h) = ((w / 2).max(1), (h / 2).max(1));
+            l += 1;
+            match self.level(l) {
+                Some(i) if i.width == w && i.height == h && i.format == base.format => {}
+                _ => return false,
+            }
+        }
+        true
+    }
+
+    /// Whether sampling with the current filters has the images it needs (else texturing
+    /// with this unit is disabled, ES 1.1 §3.7.10).
+    pub fn is_complete(&self) -> bool {
+        match self.level(0) {
+            Some(b) if b.width > 0 && b.height > 0 => {
+                !self.min_filter.uses_mipmaps() || self.mipmap_complete()
+            }
+            _ => false,
+        }
+    }
+}
+
+/// The palette entry formats of `OES_compressed_paletted_texture`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PaletteEntry {
+    Rgb8,
+    Rgba8,
+    R5G6B5,
+    Rgba4,
+    Rgb5A1,
+}
+
+/// A paletted format: 4-bit (16 entries) or 8-bit (256 entries) indices into a palette.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct PaletteFormat {
+    pub index_bits: u32,
+    pub entry: PaletteEntry,
+}
+
+impl PaletteFormat {
+    pub fn entries(self) -> usize {
+        1 << self.index_bits
+    }
+
+    pub fn entry_size(self) -> usize {
+        match self.entry {
+            PaletteEntry::Rgb8 => 3,
+            PaletteEntry::Rgba8 => 4,
+            _ => 2,
+        }
+    }
+
+    pub fn base_format(self) -> BaseFormat {
+        match self.entry {
+            PaletteEntry::Rgb8 | PaletteEntry::R5G6B5 => BaseFormat::Rgb,
+            _ => BaseFormat::Rgba,
+        }
+    }
+
+    /// The exact size of a blob holding the palette and `levels` levels starting at
+    /// `width` × `height`. Each level's indices start on a byte; 4-bit indices pack two to
+    /// a byte, the first texel in the high nibble, with no padding between rows.
+    pub fn image_size(self, width: u32, height: u32, levels: usize) -> usize {
+        let mut size = self.entries() * self.entry_size();
+        let (mut w, mut h) = (width as usize, height as usize);
+        for _ in 0..levels {
+            let n = w * h;
+            size += if self.index_bits == 4 {
+                n.div_ceil(2)
+            } else {
+                n
+            };
+            (w, h) = ((w / 2).max(1), (h / 2).max(1));
+        }
+        size
+    }
+
+    fn palette_word(self, e: &[u8]) -> u32 {
+        let short = || u16::from_ne_bytes([e[0], e[1]]) as u32;
+        match self.entry {
+            PaletteEntry::Rgb8 => word(e[0], e[1], e[2], 255),
+            PaletteEntry::Rgba8 => word(e[0], e[1], e[2], e[3]),
+            PaletteEntry::R5G6B5 => unpack_565(short()),
+            PaletteEntry::Rgba4 => unpack_4444(short()),
+            PaletteEntry::Rgb5A1 => unpack_5551(short()),
+        }
+    }
+
+    /// Decodes a blob of exactly [`PaletteFormat::image_size`] bytes into `levels` images,
+    /// or `None` when `data` has another size.
+    pub fn decode(self, width: u32, height: u32, levels: usize, data: &[u8]) -> Option<Vec<Image>> {
+        if data.len() != self.image_size(width, height, levels) {
+            return None;
+        }
+        let (palette, mut rest) = data.split_at(self.entries() * self.entry_size());
+        let palette: Vec<u32> = palette
+            .chunks_exact(self.entry_size())
+            .map(|e| self.palette_word(e))
+            .collect();
+        let mut out = Vec::with_capacity(levels);
+        let (mut w, mut h) = (width, height);
+        for _ in 0..levels {
+            let n = w as usize * h as usize;
+            let bytes = if self.index_bits == 4 {
+                n.div_ceil(2)
+            } else {
+                n
+            };
+            let (indices, tail) = rest.split_at(bytes);
+            rest = tail;
+            let texels = (0..n)
+                .map(|i| {
+                    let index = if self.index_bits == 4 {
+                        let b = indices[i / 2];
+                        if i % 2 == 0 {
+                            b >> 4
+                        } else {
+                            b & 15
+                        }
+                    } else {
+                        indices[i]
+                    };
+                    palette[index as usize]
+                })
+                .collect();
+            out.push(Image {
+                width: w,
+                height: h,
+                format: self.base_format(),
+                texels,
+            });
+            (w, h) = ((w / 2).max(1), (h / 2).max(1));
+        }
+        Some(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unpack_respects_alignment_and_expands() {
+        // 3 × 2 luminance, rows padded to 4 bytes.
+        let rect = PixelRect::new(3, 2, 1, 4).unwrap();
+        assert_eq!((rect.row_stride, rect.len), (4, 7));
+        let data = [10, 20, 30, 99, 40, 50, 60];
+        let t = unpack(BaseFormat::Luminance, PixelType::UnsignedByte, rect, &data);
+        assert_eq!(t[3].to_le_bytes(), [40, 40, 40, 255]);
+        assert_eq!(t[2].to_le_bytes(), [30, 30, 30, 255]);
+        let rect = PixelRect::new(1, 1, 1, 1).unwrap();
+        let a = unpack(BaseFormat::Alpha, PixelType::UnsignedByte, rect, &[77]);
+        assert_eq!(a[0].to_le_bytes(), [0, 0, 0, 77]);
+        let rect = PixelRect::new(1, 1, 2, 1).unwrap();
+        let p = unpack(
+            BaseFormat::Rgba,
+            PixelType::UnsignedShort4444,
+            rect,
+            &0x8f0fu16.to_ne_bytes(),
+        );
+        assert_eq!(p[0].to_le_bytes(), [0x88, 0xff, 0x00, 0xff]);
+        let p = unpack(
+            BaseFormat::Rgb,
+            PixelType::UnsignedShort565,
+            rect,
+            &0xf800u16.to_ne_bytes(),
+        );
+        assert_eq!(p[0].to_le_bytes(), [255, 0, 0, 255]);
+        let p = unpack(
+            BaseFormat::Rgba,
+            PixelType::UnsignedShort5551,
+            rect,
+            &0x07c0u16.to_ne_bytes(),
+        );
+        assert_eq!(p[0].to_le_bytes(), [0, 255, 0, 0]);
+    }
+
+    #[test]
+    fn packed_types_go_with_one_format() {
+        assert_eq!(
+            PixelType::UnsignedShort565.pixel_size(BaseFormat::Rgba),
+            None
+        );
+        assert_eq!(
+            PixelType::UnsignedShort4444.pixel_size(BaseFormat::Rgb),
+            None
+        );
+        assert_eq!(
+            PixelType::UnsignedShort5551.pixel_size(BaseFormat::Rgba),
+            Some(2)
+        );
+        assert_eq!(
+            PixelType::UnsignedByte.pixel_size(BaseFormat::LuminanceAlpha),
+            Some(2)
+        );
+    }
+
+    #[test]
+    fn paletted_sizes_and_decode() {
+        let f = PaletteFormat {
+            index_bits: 4,
+            entry: PaletteEntry::Rgb8,
+        };
+        // 16·3 palette + 4×4 level (8 bytes) + 2×2 (2) + 1×1 (1).
+        assert_eq!(f.image_size(4, 4, 3), 48 + 8 + 2 + 1);
+        let mut blob = vec![0u8; f.image_size(2, 1, 2)];
+        blob[3..6].copy_from_slice(&[1, 2, 3]); // entry 1
+        blob[15 * 3..16 * 3].copy_from_slice(&[7, 8, 9]); // entry 15
+        blob[48] = 0x1f; // texels 0 and 1 of level 0: entries 1 and 15
+        blob[49] = 0xf0; // level 1's only texel: entry 15
+        let levels = f.decode(2, 1, 2, &blob).unwrap();
+        assert_eq!(levels[0].texel(0, 0), [1, 2, 3, 255]);
+        assert_eq!(levels[0].texel(1, 0), [7, 8, 9, 255]);
+        assert_eq!(levels[1].texel(0, 0), [7, 8, 9, 255]);
+        assert_eq!(levels[1].format, BaseFormat::Rgb);
+        assert!(f.decode(2, 1, 2, &blob[1..]).is_none());
+
+        let f8 = PaletteFormat {
+            index_bits: 8,
+            entry: PaletteEntry::Rgb5A1,
+        };
+        assert_eq!(f8.image_size(2, 2, 1), 512 + 4);
+        let mut blob = vec![0u8; 516];
+        blob[2 * 200..2 * 200 + 2].copy_from_slice(&0xf801u16.to_ne_bytes());
+        blob[512 + 3] = 200;
+        let levels = f8.decode(2, 2, 1, &blob).unwrap();
+        assert_eq!(levels[0].texel(1, 1), [255, 0, 0, 255]);
+        assert_eq!(levels[0].texel(0, 0), [0, 0, 0, 0]);
+        assert_eq!(levels[0].format, BaseFormat::Rgba);
+    }
+
+    #[test]
+    fn generated_chain_is_complete_and_averaged() {
+        let mut t = Texture::new();
+        t.generate_mipmap = true;
+        let texels = vec![
+            word(0, 0, 0, 255),
+            word(255, 0, 0, 255),
+            word(0, 255, 0, 255),
+            word(255, 255, 0, 255),
+            word(0, 0, 0, 255),
+            word(0, 0, 0, 255),
+            word(0, 0, 0, 255),
+            word(0, 0, 0, 255),
+        ];
+        let v0 = t.version();
+        t.set_level(
+            0,
+            Image {
+                width: 4,
+                height: 2,
+                format: BaseFormat::Rgb,
+                texels,
+            },
+        );
+        assert_ne!(t.version(), v0);
+        assert!(t.mipmap_complete());
+        assert!(t.is_complete());
+        let l1 = t.level(1).unwrap();
+        assert_eq!((l1.width, l1.height), (2, 1));
+        assert_eq!(l1.texel(0, 0), [64, 0, 0, 255]);
+        assert_eq!(l1.texel(1, 0), [64, 128, 0, 255]);
+        let l2 = t.level(2).unwrap();
+        assert_eq!(l2.texel(0, 0), [64, 64, 0, 255]);
+        assert!(t.level(3).is_none());
+    }
+
+    #[test]
+    fn empty_base_level_has_no_chain() {
+        let mut t = Texture::new();
+        t.generate_mipmap = true;
+        t.set_level(0, Image::blank(2, 2, BaseFormat::Rgb));
+        t.set_level(0, Image::blank(0, 0, BaseFormat::Rgb));
+        assert!(t.level(1).is_none());
+        assert!(!t.is_complete());
+    }
+
+    #[test]
+    fn incomplete_without_levels() {
+        let mut t = Texture::new();
+        assert!(!t.is_complete());
+        t.set_level(0, Image::blank(2, 2, BaseFormat::Alpha));
+        assert!(!t.is_complete(), "default min filter needs mipmaps");
+        t.min_filter = MinFilter::Linear;
+        assert!(t.is_complete());
+        assert_eq!(t.level(0).unwrap().texel(1, 1), [0, 0, 0, 0]);
+    }
+}

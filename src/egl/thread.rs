@@ -1,0 +1,93 @@
+//! Per-thread EGL state: the last error, the bound client API and the current context with
+//! its draw and read surfaces.
+
+use std::cell::RefCell;
+use std::sync::Arc;
+
+use super::context::Context;
+use super::surface::Surface;
+use super::tokens::*;
+use super::types::{EGLenum, EGLint};
+
+/// A thread's current context and surfaces (there is no surfaceless binding).
+#[derive(Clone)]
+pub struct Current {
+    pub ctx: Arc<Context>,
+    pub draw: Arc<Surface>,
+    pub read: Arc<Surface>,
+}
+
+struct ThreadState {
+    error: EGLint,
+    api: EGLenum,
+    current: Option<Current>,
+}
+
+impl Drop for ThreadState {
+    /// A thread that exits with a current context releases it, so other threads may bind it.
+    fn drop(&mut self) {
+        if let Some(c) = self.current.take() {
+            super::display::forget_thread_binding(&c);
+        }
+    }
+}
+
+thread_local! {
+    static STATE: RefCell<ThreadState> = const {
+        RefCell::new(ThreadState {
+            error: EGL_SUCCESS,
+            api: EGL_OPENGL_ES_API,
+            current: None,
+        })
+    };
+}
+
+static NEXT_THREAD_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+
+thread_local! {
+    static THREAD_ID: u64 = NEXT_THREAD_ID.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+}
+
+/// A number naming the calling thread, never reused (`std::thread::current` would allocate a
+/// handle the main thread never frees).
+pub fn id() -> u64 {
+    THREAD_ID.try_with(|t| *t).unwrap_or(0)
+}
+
+/// Records the result of an EGL call (EGL_SUCCESS after a successful one).
+pub fn set_error(e: EGLint) {
+    let _ = STATE.try_with(|s| s.borrow_mut().error = e);
+}
+
+/// eglGetError: returns the last error and resets it to EGL_SUCCESS.
+pub fn take_error() -> EGLint {
+    STATE
+        .try_with(|s| std::mem::replace(&mut s.borrow_mut().error, EGL_SUCCESS))
+        .unwrap_or(EGL_SUCCESS)
+}
+
+pub fn api() -> EGLenum {
+    STATE
+        .try_with(|s| s.borrow().api)
+        .unwrap_or(EGL_OPENGL_ES_API)
+}
+
+pub fn set_api(api: EGLenum) {
+    let _ = STATE.try_with(|s| s.borrow_mut().api = api);
+}
+
+/// The calling thread's current context and surfaces.
+pub fn current() -> Option<Current> {
+    STATE
+        .try_with(|s| s.borrow().current.clone())
+        .ok()
+        .flatten()
+}
+
+/// Replaces the calling thread's current binding, returning the previous one.
+pub fn replace_current(new: Option<Current>) -> Option<Current> {
+    STATE
+        .try_with(|s| std::mem::replace(&mut s.borrow_mut().current, new))
+        .ok()
+        .flatten()
+}

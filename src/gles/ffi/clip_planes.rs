@@ -1,0 +1,50 @@
+//! User clip planes.
+
+use crate::core::fixed::{from_f32, to_f32 as fx};
+use crate::gles::types::*;
+
+use super::{read_array, with_context, write_values};
+
+/// # Safety
+/// A non-null `equation` must point to four values.
+#[no_mangle]
+pub unsafe extern "C" fn glClipPlanef(plane: GLenum, equation: *const GLfloat) {
+    // SAFETY: the caller passes four values.
+    if let Some(eq) = unsafe { read_array::<GLfloat, 4>(equation) } {
+        with_context((), |c| c.clip_plane(plane, eq))
+    }
+}
+
+/// # Safety
+/// A non-null `equation` must point to four values.
+#[no_mangle]
+pub unsafe extern "C" fn glClipPlanex(plane: GLenum, equation: *const GLfixed) {
+    // SAFETY: the caller passes four values.
+    if let Some(eq) = unsafe { read_array::<GLfixed, 4>(equation) } {
+        with_context((), |c| c.clip_plane(plane, eq.map(fx)))
+    }
+}
+
+/// # Safety
+/// A non-null `equation` must have room for four values.
+#[no_mangle]
+pub unsafe extern "C" fn glGetClipPlanef(plane: GLenum, equation: *mut GLfloat) {
+    with_context((), |c| {
+        if let Some(eq) = c.get_clip_plane(plane) {
+            // SAFETY: the caller provides room for four values.
+            unsafe { write_values(equation, eq.into_iter()) }
+        }
+    })
+}
+
+/// # Safety
+/// A non-null `equation` must have room for four values.
+#[no_mangle]
+pub unsafe extern "C" fn glGetClipPlanex(plane: GLenum, equation: *mut GLfixed) {
+    with_context((), |c| {
+        if let Some(eq) = c.get_clip_plane(plane) {
+            // SAFETY: the caller provides room for four values.
+            unsafe { write_values(equation, eq.into_iter().map(from_f32)) }
+        }
+    })
+}

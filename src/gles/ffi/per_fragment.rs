@@ -1,0 +1,57 @@
+//! Per-fragment operations: alpha and stencil tests, blending, logic op, sample coverage,
+//! polygon offset.
+
+use crate::core::fixed::to_f32 as fx;
+use crate::gles::types::*;
+
+use super::with_context;
+
+#[no_mangle]
+pub extern "C" fn glAlphaFunc(func: GLenum, reference: GLclampf) {
+    with_context((), |c| c.alpha_func(func, reference))
+}
+
+#[no_mangle]
+pub extern "C" fn glAlphaFuncx(func: GLenum, reference: GLclampx) {
+    with_context((), |c| c.alpha_func(func, fx(reference)))
+}
+
+#[no_mangle]
+pub extern "C" fn glBlendFunc(sfactor: GLenum, dfactor: GLenum) {
+    with_context((), |c| c.blend_func(sfactor, dfactor))
+}
+
+#[no_mangle]
+pub extern "C" fn glLogicOp(opcode: GLenum) {
+    with_context((), |c| c.logic_op(opcode))
+}
+
+#[no_mangle]
+pub extern "C" fn glStencilFunc(func: GLenum, reference: GLint, mask: GLuint) {
+    with_context((), |c| c.stencil_func(func, reference, mask))
+}
+
+#[no_mangle]
+pub extern "C" fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) {
+    with_context((), |c| c.stencil_op(fail, zfail, zpass))
+}
+
+#[no_mangle]
+pub extern "C" fn glSampleCoverage(value: GLclampf, invert: GLboolean) {
+    with_context((), |c| c.sample_coverage(value, invert != 0))
+}
+
+#[no_mangle]
+pub extern "C" fn glSampleCoveragex(value: GLclampx, invert: GLboolean) {
+    with_context((), |c| c.sample_coverage(fx(value), invert != 0))
+}
+
+#[no_mangle]
+pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
+    with_context((), |c| c.polygon_offset(factor, units))
+}
+
+#[no_mangle]
+pub extern "C" fn glPolygonOffsetx(factor: GLfixed, units: GLfixed) {
+    with_context((), |c| c.polygon_offset(fx(factor), fx(units)))
+}

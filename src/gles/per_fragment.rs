@@ -1,0 +1,182 @@
+//! Per-fragment operation state (ES 1.1 §4.1) and the polygon offset (§3.5.5): alpha test,
+//! stencil test, blending, logic op, sample coverage. Only recorded here; the fragment stage
+//! reads it through this plain struct.
+
+use crate::core::CompareFunc;
+
+use super::context::{compare_func, compare_func_enum, Context};
+use super::get::Value;
+use super::params::clamp01;
+use super::tokens::*;
+use super::types::*;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FragmentState {
+    pub alpha_func: CompareFunc,
+    /// Clamped to [0, 1] when specified.
+    pub alpha_ref: f32,
+    /// `GL_BLEND_SRC` / `GL_BLEND_DST` factors, as their enumerants.
+    pub blend_src: GLenum,
+    pub blend_dst: GLenum,
+    pub logic_op: GLenum,
+    pub stencil_func: CompareFunc,
+    /// As given; clamped to [0, 2^s - 1] where it is used and queried.
+    pub stencil_ref: i32,
+    pub stencil_value_mask: u32,
+    pub stencil_fail: GLenum,
+    pub stencil_pass_depth_fail: GLenum,
+    pub stencil_pass_depth_pass: GLenum,
+    /// Clamped to [0, 1] when specified.
+    pub sample_coverage_value: f32,
+    pub sample_coverage_invert: bool,
+    pub polygon_offset_factor: f32,
+    pub polygon_offset_units: f32,
+}
+
+impl Default for FragmentState {
+    fn default() -> FragmentState {
+        FragmentState {
+            alpha_func: CompareFunc::Always,
+            alpha_ref: 0.0,
+            blend_src: GL_ONE,
+            blend_dst: GL_ZERO,
+            logic_op: GL_COPY,
+            stencil_func: CompareFunc::Always,
+            stencil_ref: 0,
+            stencil_value_mask: u32::MAX,
+            stencil_fail: GL_KEEP,
+            stencil_pass_depth_fail: GL_KEEP,
+            stencil_pass_depth_pass: GL_KEEP,
+            sample_coverage_value: 1.0,
+            sample_coverage_invert: false,
+            polygon_offset_factor: 0.0,
+            polygon_offset_units: 0.0,
+        }
+    }
+}
+
+/// Source factors of `glBlendFunc` (ES 1.1 table 4.1).
+fn is_blend_src(f: GLenum) -> bool {
+    matches!(
+        f,
+        GL_ZERO
+            | GL_ONE
+            | GL_DST_COLOR
+            | GL_ONE_MINUS_DST_COLOR
+            | GL_SRC_ALPHA
+            | GL_ONE_MINUS_SRC_ALPHA
+            | GL_DST_ALPHA
+            | GL_ONE_MINUS_DST_ALPHA
+            | GL_SRC_ALPHA_SATURATE
+    )
+}
+
+/// Destination factors of `glBlendFunc` (ES 1.1 table 4.1).
+fn is_blend_dst(f: GLenum) -> bool {
+    matches!(
+        f,
+        GL_ZERO
+            | GL_ONE
+            | GL_SRC_COLOR
+            | GL_ONE_MINUS_SRC_COLOR
+            | GL_SRC_ALPHA
+            | GL_ONE_MINUS_SRC_ALPHA
+            | GL_DST_ALPHA
+            | GL_ONE_MINUS_DST_ALPHA
+    )
+}
+
+fn is_stencil_op(op: GLenum) -> bool {
+    matches!(
+        op,
+        GL_KEEP | GL_ZERO | GL_REPLACE | GL_INCR | GL_DECR | GL_INVERT
+    )
+}
+
+impl Context {
+    pub fn alpha_func(&mut self, func: GLenum, reference: f32) {
+        match compare_func(func) {
+            Some(f) => {
+                self.fragment.alpha_func = f;
+                self.fragment.alpha_ref = clamp01(reference);
+            }
+            None => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    pub fn blend_func(&mut self, src: GLenum, dst: GLenum) {
+        if !is_blend_src(src) || !is_blend_dst(dst) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.fragment.blend_src = src;
+        self.fragment.blend_dst = dst;
+    }
+
+    pub fn logic_op(&mut self, op: GLenum) {
+        if !(GL_CLEAR..=GL_SET).contains(&op) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.fragment.logic_op = op;
+    }
+
+    pub fn stencil_func(&mut self, func: GLenum, reference: i32, mask: u32) {
+        let Some(f) = compare_func(func) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        let s = &mut self.fragment;
+        s.stencil_func = f;
+        s.stencil_ref = reference;
+        s.stencil_value_mask = mask;
+    }
+
+    pub fn stencil_op(&mut self, fail: GLenum, zfail: GLenum, zpass: GLenum) {
+        if !is_stencil_op(fail) || !is_stencil_op(zfail) || !is_stencil_op(zpass) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let s = &mut self.fragment;
+        s.stencil_fail = fail;
+        s.stencil_pass_depth_fail = zfail;
+        s.stencil_pass_depth_pass = zpass;
+    }
+
+    pub fn sample_coverage(&mut self, value: f32, invert: bool) {
+        self.fragment.sample_coverage_value = clamp01(value);
+        self.fragment.sample_coverage_invert = invert;
+    }
+
+    pub fn polygon_offset(&mut self, factor: f32, units: f32) {
+        self.fragment.polygon_offset_factor = factor;
+        self.fragment.polygon_offset_units = units;
+    }
+
+    /// The stencil reference value clamped to the draw surface's stencil range.
+    pub fn effective_stencil_ref(&self) -> i32 {
+        let bits = self.draw_format().map_or(0, |f| f.stencil_bits.min(31));
+        let max = ((1i64 << bits) - 1) as i32;
+        self.fragment.stencil_ref.clamp(0, max)
+    }
+
+    /// The `glGet*` values of this area.
+    pub(super) fn fragment_value(&self, pname: GLenum) -> Option<Value> {
+        let s = &self.fragment;
+        let e = |v: GLenum| Value::int(v as i64);
+        Some(match pname {
+            GL_ALPHA_TEST_FUNC => e(compare_func_enum(s.alpha_func)),
+            GL_ALPHA_TEST_REF => Value::norm(&[s.alpha_ref]),
+            GL_BLEND_SRC => e(s.blend_src),
+            GL_BLEND_DST => e(s.blend_dst),
+            GL_LOGIC_OP_MODE => e(s.logic_op),
+            GL_STENCIL_FUNC => e(compare_func_enum(s.stencil_func)),
+            GL_STENCIL_REF => Value::int(self.effective_stencil_ref() as i64),
+            GL_STENCIL_VALUE_MASK => Value::int(s.stencil_value_mask as i32 as i64),
+            GL_STENCIL_FAIL => e(s.stencil_fail),
+            GL_STENCIL_PASS_DEPTH_FAIL => e(s.stencil_pass_depth_fail),
+            GL_STENCIL_PASS_DEPTH_PASS => e(s.stencil_pass_depth_pass),
+            GL_SAMPLE_COVERAGE_VALUE => Value::floats(&[s.sample_coverage_value]),
+            GL_SAMPLE_COVERAGE_INVERT => Value::bools(&[s.sample_coverage_invert]),
+            GL_POLYGON_OFFSET_FACTOR => Value::floats(&[s.polygon_offset_factor]),
+            GL_POLYGON_OFFSET_UNITS => Value::floats(&[s.polygon_offset_units]),
+            _ => return None,
+        })
+    }
+}

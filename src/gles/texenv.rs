@@ -1,0 +1,222 @@
+//! Texture environments (ES 1.1 §3.7.12), one per texture unit, and the per-unit point
+//! sprite coordinate replacement (OES_point_sprite). Not part of any texture object.
+
+use super::context::{Context, MAX_TEXTURE_UNITS};
+use super::get::Value;
+use super::params::{clamp01, Params};
+use super::tokens::*;
+use super::types::*;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexEnvUnit {
+    /// `GL_MODULATE`, `GL_REPLACE`, `GL_DECAL`, `GL_BLEND`, `GL_ADD` or `GL_COMBINE`.
+    pub mode: GLenum,
+    /// Clamped to [0, 1] when specified.
+    pub color: [f32; 4],
+    pub combine_rgb: GLenum,
+    pub combine_alpha: GLenum,
+    pub src_rgb: [GLenum; 3],
+    pub src_alpha: [GLenum; 3],
+    pub operand_rgb: [GLenum; 3],
+    pub operand_alpha: [GLenum; 3],
+    /// 1, 2 or 4.
+    pub rgb_scale: f32,
+    pub alpha_scale: f32,
+    /// `GL_COORD_REPLACE_OES` of the `GL_POINT_SPRITE_OES` target.
+    pub coord_replace: bool,
+}
+
+impl Default for TexEnvUnit {
+    fn default() -> TexEnvUnit {
+        TexEnvUnit {
+            mode: GL_MODULATE,
+            color: [0.0; 4],
+            combine_rgb: GL_MODULATE,
+            combine_alpha: GL_MODULATE,
+            src_rgb: [GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT],
+            src_alpha: [GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT],
+            operand_rgb: [GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA],
+            operand_alpha: [GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA],
+            rgb_scale: 1.0,
+            alpha_scale: 1.0,
+            coord_replace: false,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct TexEnv {
+    pub units: [TexEnvUnit; MAX_TEXTURE_UNITS],
+}
+
+/// How many values `glTexEnv*v` reads for `pname`.
+pub fn tex_env_parameter_count(pname: GLenum) -> usize {
+    if pname == GL_TEXTURE_ENV_COLOR {
+        4
+    } else {
+        1
+    }
+}
+
+/// Which slot of a unit's environment `pname` names, with the values it accepts.
+enum Slot {
+    Mode,
+    Color,
+    CombineRgb,
+    CombineAlpha,
+    SrcRgb(usize),
+    SrcAlpha(usize),
+    OperandRgb(usize),
+    OperandAlpha(usize),
+    RgbScale,
+    AlphaScale,
+}
+
+fn slot(pname: GLenum) -> Option<Slot> {
+    Some(match pname {
+        GL_TEXTURE_ENV_MODE => Slot::Mode,
+        GL_TEXTURE_ENV_COLOR => Slot::Color,
+        GL_COMBINE_RGB => Slot::CombineRgb,
+        GL_COMBINE_ALPHA => Slot::CombineAlpha,
+        GL_SRC0_RGB => Slot::SrcRgb(0),
+        GL_SRC1_RGB => Slot::SrcRgb(1),
+        GL_SRC2_RGB => Slot::SrcRgb(2),
+        GL_SRC0_ALPHA => Slot::SrcAlpha(0),
+        GL_SRC1_ALPHA => Slot::SrcAlpha(1),
+        GL_SRC2_ALPHA => Slot::SrcAlpha(2),
+        GL_OPERAND0_RGB => Slot::OperandRgb(0),
+        GL_OPERAND1_RGB => Slot::OperandRgb(1),
+        GL_OPERAND2_RGB => Slot::OperandRgb(2),
+        GL_OPERAND0_ALPHA => Slot::OperandAlpha(0),
+        GL_OPERAND1_ALPHA => Slot::OperandAlpha(1),
+        GL_OPERAND2_ALPHA => Slot::OperandAlpha(2),
+        GL_RGB_SCALE => Slot::RgbScale,
+        GL_ALPHA_SCALE => Slot::AlphaScale,
+        _ => return None,
+    })
+}
+
+impl Context {
+    /// `glTexEnv{f,i,x}[v]` for the active texture unit. Unknown targets and names, and
+    /// enumerants a name does not accept, are `GL_INVALID_ENUM`; scales other than 1, 2
+    /// and 4 and a `GL_COORD_REPLACE_OES` other than TRUE/FALSE are `GL_INVALID_VALUE`.
+    pub fn tex_env(&mut self, target: GLenum, pname: GLenum, p: Params<'_>) {
+        let unit = self.active_texture;
+        if p.len() < tex_env_parameter_count(pname) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        match (target, pname) {
+            (GL_POINT_SPRITE_OES, GL_COORD_REPLACE_OES) => {
+                // A boolean: like enumerants, passed unconverted by the fixed-point calls.
+                let on = match p.enumerant(0) {
+                    Some(0) => false,
+                    Some(1) => true,
+                    _ => return self.set_error(GL_INVALID_VALUE),
+                };
+                self.texenv.units[unit].coord_replace = on;
+                return;
+            }
+            (GL_TEXTURE_ENV, _) => {}
+            _ => return self.set_error(GL_INVALID_ENUM),
+        }
+        let Some(s) = slot(pname) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        let u = &mut self.texenv.units[unit];
+        match s {
+            Slot::Color => {
+                u.color = p.color().map(clamp01);
+                return;
+            }
+            Slot::RgbScale | Slot::AlphaScale => {
+                let v = p.number(0);
+                if v != 1.0 && v != 2.0 && v != 4.0 {
+                    return self.set_error(GL_INVALID_VALUE);
+                }
+                match s {
+                    Slot::RgbScale => u.rgb_scale = v,
+                    _ => u.alpha_scale = v,
+                }
+                return;
+            }
+            _ => {}
+        }
+        let Some(e) = p.enumerant(0) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        let ok = match s {
+            Slot::Mode => matches!(
+                e,
+                GL_MODULATE | GL_REPLACE | GL_DECAL | GL_BLEND | GL_ADD | GL_COMBINE
+            ),
+            Slot::CombineRgb => matches!(
+                e,
+                GL_REPLACE
+                    | GL_MODULATE
+                    | GL_ADD
+                    | GL_ADD_SIGNED
+                    | GL_INTERPOLATE
+                    | GL_SUBTRACT
+                    | GL_DOT3_RGB
+                    | GL_DOT3_RGBA
+            ),
+            Slot::CombineAlpha => matches!(
+                e,
+                GL_REPLACE | GL_MODULATE | GL_ADD | GL_ADD_SIGNED | GL_INTERPOLATE | GL_SUBTRACT
+            ),
+            Slot::SrcRgb(_) | Slot::SrcAlpha(_) => {
+                matches!(e, GL_TEXTURE | GL_CONSTANT | GL_PRIMARY_COLOR | GL_PREVIOUS)
+            }
+            Slot::OperandRgb(_) => matches!(
+                e,
+                GL_SRC_COLOR | GL_ONE_MINUS_SRC_COLOR | GL_SRC_ALPHA | GL_ONE_MINUS_SRC_ALPHA
+            ),
+            Slot::OperandAlpha(_) => matches!(e, GL_SRC_ALPHA | GL_ONE_MINUS_SRC_ALPHA),
+            Slot::Color | Slot::RgbScale | Slot::AlphaScale => false,
+        };
+        if !ok {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        match s {
+            Slot::Mode => u.mode = e,
+            Slot::CombineRgb => u.combine_rgb = e,
+            Slot::CombineAlpha => u.combine_alpha = e,
+            Slot::SrcRgb(i) => u.src_rgb[i] = e,
+            Slot::SrcAlpha(i) => u.src_alpha[i] = e,
+            Slot::OperandRgb(i) => u.operand_rgb[i] = e,
+            Slot::OperandAlpha(i) => u.operand_alpha[i] = e,
+            Slot::Color | Slot::RgbScale | Slot::AlphaScale => {}
+        }
+    }
+
+    /// `glGetTexEnv{f,i,x}v` for the active texture unit. Enumerants are `Kind::Int`
+    /// replies, the color `Kind::Normalized`, the scales `Kind::Float`.
+    pub fn get_tex_env(&mut self, target: GLenum, pname: GLenum) -> Option<Value> {
+        let u = &self.texenv.units[self.active_texture];
+        let e = |v: GLenum| Value::int(v as i64);
+        let v = match (target, pname) {
+            (GL_POINT_SPRITE_OES, GL_COORD_REPLACE_OES) => Value::int(u.coord_replace as i64),
+            (GL_TEXTURE_ENV, _) => match slot(pname) {
+                Some(Slot::Mode) => e(u.mode),
+                Some(Slot::Color) => Value::norm(&u.color),
+                Some(Slot::CombineRgb) => e(u.combine_rgb),
+                Some(Slot::CombineAlpha) => e(u.combine_alpha),
+                Some(Slot::SrcRgb(i)) => e(u.src_rgb[i]),
+                Some(Slot::SrcAlpha(i)) => e(u.src_alpha[i]),
+                Some(Slot::OperandRgb(i)) => e(u.operand_rgb[i]),
+                Some(Slot::OperandAlpha(i)) => e(u.operand_alpha[i]),
+                Some(Slot::RgbScale) => Value::floats(&[u.rgb_scale]),
+                Some(Slot::AlphaScale) => Value::floats(&[u.alpha_scale]),
+                None => {
+                    self.set_error(GL_INVALID_ENUM);
+                    return None;
+                }
+            },
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        Some(v)
+    }
+}

@@ -1,0 +1,839 @@
+//! Texture objects (ES 1.1 §3.7): names, bindings, parameters and image specification,
+//! including `OES_compressed_paletted_texture`, copies from the read surface and the hooks
+//! `eglBindTexImage` / `eglReleaseTexImage` use. The objects themselves and their data are
+//! [`crate::core::texture`]; this module validates and converts GL arguments.
+//!
+//! Named textures live in the share group's [`SharedObjects`]; texture 0 (the default
+//! texture) belongs to each context. A name deleted in another context of the share group
+//! while bound here is recreated, empty, the next time this context uses the binding.
+//!
+//! Flush points (ARCHITECTURE decision 5): every change to a texture's images or parameters
+//! first completes the rendering this context has recorded, since recorded work may sample
+//! it. [`Texture::version`] changes with each change, for caches that want to notice.
+
+use std::collections::HashMap;
+
+use crate::core::fixed;
+use crate::core::texture::{
+    convert_word, BaseFormat, Image, MagFilter, MinFilter, PaletteEntry, PaletteFormat, PixelRect,
+    PixelType, Texture, Wrap, MAX_LEVEL, MAX_TEXTURE_SIZE,
+};
+use crate::core::{ColorFormat, Target};
+
+use super::buffer::lock_objects;
+use super::context::{lock_target, Context, MAX_TEXTURE_UNITS};
+use super::get::Value;
+use super::tokens::*;
+use super::tokens_ext::*;
+use super::types::*;
+
+/// The texture names of a share group: `None` for names generated but not yet bound.
+#[derive(Debug, Default)]
+pub struct TextureNames {
+    objects: HashMap<GLuint, Option<Texture>>,
+    next: GLuint,
+}
+
+impl TextureNames {
+    /// The texture called `name`, if it has been bound at least once.
+    pub fn get(&self, name: GLuint) -> Option<&Texture> {
+        self.objects.get(&name)?.as_ref()
+    }
+
+    /// The texture called `name`, created if the name is unused or only generated.
+    fn get_or_create(&mut self, name: GLuint) -> &mut Texture {
+        self.objects
+            .entry(name)
+            .or_insert(None)
+            .get_or_insert_with(Texture::new)
+    }
+
+    fn generate(&mut self) -> GLuint {
+        loop {
+            self.next = self.next.wrapping_add(1).max(1);
+            if !self.objects.contains_key(&self.next) {
+                self.objects.insert(self.next, None);
+                return self.next;
+            }
+        }
+    }
+}
+
+/// A context's texture bindings and its default texture.
+#[derive(Debug, Default)]
+pub struct TextureUnits {
+    /// The name bound to `GL_TEXTURE_2D` on each unit (0: the default texture).
+    pub bound: [GLuint; MAX_TEXTURE_UNITS],
+    pub default: Texture,
+}
+
+/// The compressed formats `glGetIntegerv(GL_COMPRESSED_TEXTURE_FORMATS)` lists.
+pub const COMPRESSED_FORMATS: [GLenum; 10] = [
+    GL_PALETTE4_RGB8_OES,
+    GL_PALETTE4_RGBA8_OES,
+    GL_PALETTE4_R5_G6_B5_OES,
+    GL_PALETTE4_RGBA4_OES,
+    GL_PALETTE4_RGB5_A1_OES,
+    GL_PALETTE8_RGB8_OES,
+    GL_PALETTE8_RGBA8_OES,
+    GL_PALETTE8_R5_G6_B5_OES,
+    GL_PALETTE8_RGBA4_OES,
+    GL_PALETTE8_RGB5_A1_OES,
+];
+
+/// A validated `glTexImage2D` / `glTexSubImage2D` request: where the texels go and how the
+/// client memory is laid out (`rect.len` bytes are read when pixels are given).
+#[derive(Clone, Copy, Debug)]
+pub struct TexUpload {
+    pub level: usize,
+    pub x: u32,
+    pub y: u32,
+    pub format: BaseFormat,
+    pub ty: PixelType,
+    pub rect: PixelRect,
+}
+
+pub fn base_format(format: GLenum) -> Option<BaseFormat> {
+    Some(match format {
+        GL_ALPHA => BaseFormat::Alpha,
+        GL_LUMINANCE => BaseFormat::Luminance,
+        GL_LUMINANCE_ALPHA => BaseFormat::LuminanceAlpha,
+        GL_RGB => BaseFormat::Rgb,
+        GL_RGBA => BaseFormat::Rgba,
+        _ => return None,
+    })
+}
+
+pub fn base_format_enum(format: BaseFormat) -> GLenum {
+    match format {
+        BaseFormat::Alpha => GL_ALPHA,
+        BaseFormat::Luminance => GL_LUMINANCE,
+        BaseFormat::LuminanceAlpha => GL_LUMINANCE_ALPHA,
+        BaseFormat::Rgb => GL_RGB,
+        BaseFormat::Rgba => GL_RGBA,
+    }
+}
+
+fn pixel_type(ty: GLenum) -> Option<PixelType> {
+    Some(match ty {
+        GL_UNSIGNED_BYTE => PixelType::UnsignedByte,
+        GL_UNSIGNED_SHORT_5_6_5 => PixelType::UnsignedShort565,
+        GL_UNSIGNED_SHORT_4_4_4_4 => PixelType::UnsignedShort4444,
+        GL_UNSIGNED_SHORT_5_5_5_1 => PixelType::UnsignedShort5551,
+        _ => return None,
+    })
+}
+
+pub fn palette_format(format: GLenum) -> Option<PaletteFormat> {
+    let i = COMPRESSED_FORMATS.iter().position(|&f| f == format)?;
+    let entry = [
+        PaletteEntry::Rgb8,
+        PaletteEntry::Rgba8,
+        PaletteEntry::R5G6B5,
+        PaletteEntry::Rgba4,
+        PaletteEntry::Rgb5A1,
+    ][i % 5];
+    Some(PaletteFormat {
+        index_bits: if i < 5 { 4 } else { 8 },
+        entry,
+    })
+}
+
+/// Whether a level-`level` image of `width` × `height` is allowed: level in
+/// 0 ..= log2(max size), sides non-negative, no larger than the level's maximum, and powers
+/// of two (ES 1.1 has no non-power-of-two textures; 0 is allowed).
+pub fn valid_image_size(level: i32, width: i32, height: i32) -> bool {
+    if !(0..=MAX_LEVEL as i32).contains(&level) {
+        return false;
+    }
+    let max = (MAX_TEXTURE_SIZE >> level) as i32;
+    let side = |s: i32| s == 0 || ((0..=max).contains(&s) && (s as u32).is_power_of_two());
+    side(width) && side(height)
+}
+
+/// The base formats a color buffer of `color` can be copied into (ES 1.1 table 3.15: every
+/// component of the texture format must exist in the buffer).
+fn copy_compatible(color: ColorFormat, format: BaseFormat) -> bool {
+    let alpha = color.bits()[3] > 0;
+    alpha || !format.has_alpha()
+}
+
+/// Reads the `w` × `h` rectangle at (x, y) of `t` as words converted to `format`; pixels
+/// outside the target (undefined in GL) read as zero.
+fn read_region(t: &Target, x: i32, y: i32, w: u32, h: u32, format: BaseFormat) -> Vec<u32> {
+    let mut out = Vec::with_capacity(w as usize * h as usize);
+    for row in 0..h as i64 {
+        for col in 0..w as i64 {
+            let (sx, sy) = (x as i64 + col, y as i64 + row);
+            let inside =
+                (0..t.width() as i64).contains(&sx) && (0..t.height() as i64).contains(&sy);
+            let word = if inside {
+                u32::from_le_bytes(t.pixel(sx as u32, sy as u32))
+            } else {
+                0
+            };
+            out.push(convert_word(format, word));
+        }
+    }
+    out
+}
+
+/// How a `glTexParameter*` / `glGetTexParameter*` call passes its values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamKind {
+    /// `i` / `iv`: integers as given.
+    Int,
+    /// `f` / `fv`: enums converted from float, the crop rectangle rounded.
+    Float,
+    /// `x` / `xv`: enums passed unconverted, the crop rectangle as 16.16 fixed point.
+    Fixed,
+}
+
+impl Context {
+    /// Completes recorded rendering before a texture changes (ARCHITECTURE decision 5).
+    fn texture_changing(&mut self) {
+        if self.frame.as_ref().is_some_and(|f| !f.is_empty()) {
+            self.flush();
+        }
+    }
+
+    /// Runs `f` on the texture bound to the active unit.
+    pub fn with_bound_texture<R>(&mut self, f: impl FnOnce(&mut Texture) -> R) -> R {
+        let name = self.textures.bound[self.active_texture];
+        if name == 0 {
+            f(&mut self.textures.default)
+        } else {
+            let shared = self.shared.clone();
+            let mut o = lock_objects(&shared);
+            f(o.textures.get_or_create(name))
+        }
+    }
+
+    /// The name bound to `GL_TEXTURE_2D` on texture unit `unit`.
+    pub fn texture_binding(&self, unit: usize) -> GLuint {
+        self.textures.bound[unit]
+    }
+
+    pub fn gen_textures(&mut self, n: i32) -> Vec<GLuint> {
+        if n < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return Vec::new();
+        }
+        let mut o = lock_objects(&self.shared);
+        (0..n).map(|_| o.textures.generate()).collect()
+    }
+
+    /// `glDeleteTextures(n, names)`: names bound on any unit of this context revert to 0.
+    pub fn delete_textures(&mut self, n: i32, names: &[GLuint]) {
+        if n < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        self.texture_changing();
+        let shared = self.shared.clone();
+        let mut o = lock_objects(&shared);
+        for &name in names {
+            if name == 0 || o.textures.objects.remove(&name).is_none() {
+                continue;
+            }
+            for b in &mut self.textures.bound {
+                if *b == name {
+                    *b = 0;
+                }
+            }
+        }
+    }
+
+    pub fn bind_texture(&mut self, target: GLenum, name: GLuint) {
+        if target != GL_TEXTURE_2D {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if name != 0 {
+            lock_objects(&self.shared).textures.get_or_create(name);
+        }
+        self.textures.bound[self.active_texture] = name;
+    }
+
+    pub fn is_texture(&mut self, name: GLuint) -> bool {
+        name != 0 && lock_objects(&self.shared).textures.get(name).is_some()
+    }
+
+    /// `glTexParameter{i,f,x}[v]`. `values` holds one value, or four for
+    /// `GL_TEXTURE_CROP_RECT_OES` (allowed only through the vector forms, `vector`).
+    pub fn tex_parameter(
+        &mut self,
+        target: GLenum,
+        pname: GLenum,
+        values: &[f64],
+        kind: ParamKind,
+        vector: bool,
+    ) {
+        if target != GL_TEXTURE_2D {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if pname == GL_TEXTURE_CROP_RECT_OES {
+            if !vector || values.len() < 4 {
+                return self.set_error(GL_INVALID_ENUM);
+            }
+            let rect: [i32; 4] = std::array::from_fn(|i| {
+                let v = match kind {
+                    ParamKind::Fixed => fixed::to_f32(values[i] as i32) as f64,
+                    _ => values[i],
+                };
+                v.round().clamp(i32::MIN as f64, i32::MAX as f64) as i32
+            });
+            self.texture_changing();
+            return self.with_bound_texture(|t| {
+                t.crop_rect = rect;
+                t.touch();
+            });
+        }
+        let Some(&v) = values.first() else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        // Enum values arrive unconverted in every form (a float holding the enum's value).
+        let e = if v.fract() == 0.0 && (0.0..=u32::MAX as f64).contains(&v) {
+            v as GLenum
+        } else {
+            GL_NONE_INVALID
+        };
+        enum Set {
+            Min(MinFilter),
+            Mag(MagFilter),
+            WrapS(Wrap),
+            WrapT(Wrap),
+            Generate(bool),
+        }
+        let wrap = |e| match e {
+            GL_REPEAT => Some(Wrap::Repeat),
+            GL_CLAMP_TO_EDGE => Some(Wrap::ClampToEdge),
+            _ => None,
+        };
+        let set = match pname {
+            GL_TEXTURE_MIN_FILTER => match e {
+                GL_NEAREST => Some(Set::Min(MinFilter::Nearest)),
+                GL_LINEAR => Some(Set::Min(MinFilter::Linear)),
+                GL_NEAREST_MIPMAP_NEAREST => Some(Set::Min(MinFilter::NearestMipmapNearest)),
+                GL_LINEAR_MIPMAP_NEAREST => Some(Set::Min(MinFilter::LinearMipmapNearest)),
+                GL_NEAREST_MIPMAP_LINEAR => Some(Set::Min(MinFilter::NearestMipmapLinear)),
+                GL_LINEAR_MIPMAP_LINEAR => Some(Set::Min(MinFilter::LinearMipmapLinear)),
+                _ => None,
+            },
+            GL_TEXTURE_MAG_FILTER => match e {
+                GL_NEAREST => Some(Set::Mag(MagFilter::Nearest)),
+                GL_LINEAR => Some(Set::Mag(MagFilter::Linear)),
+                _ => None,
+            },
+            GL_TEXTURE_WRAP_S => wrap(e).map(Set::WrapS),
+            GL_TEXTURE_WRAP_T => wrap(e).map(Set::WrapT),
+            GL_GENERATE_MIPMAP => match e {
+                0 => Some(Set::Generate(false)),
+                1 => Some(Set::Generate(true)),
+                _ => None,
+            },
+            _ => None,
+        };
+        let Some(set) = set else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        self.texture_changing();
+        self.with_bound_texture(|t| {
+            match set {
+                Set::Min(f) => t.min_filter = f,
+                Set::Mag(f) => t.mag_filter = f,
+                Set::WrapS(w) => t.wrap_s = w,
+                Set::WrapT(w) => t.wrap_t = w,
+                Set::Generate(g) => t.generate_mipmap = g,
+            }
+            t.touch();
+        })
+    }
+
+    /// `glGetTexParameter{i,f,x}v`: the values, already in the form `kind` returns (fixed
+    /// point for the crop rectangle of the `x` form, enums unconverted).
+    pub fn get_tex_parameter(
+        &mut self,
+        target: GLenum,
+        pname: GLenum,
+        kind: ParamKind,
+    ) -> Option<Vec<f64>> {
+        if target != GL_TEXTURE_2D {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        let v = self.with_bound_texture(|t| -> Option<Vec<f64>> {
+            let e = |v: GLenum| Some(vec![v as f64]);
+            match pname {
+                GL_TEXTURE_MIN_FILTER => e(match t.min_filter {
+                    MinFilter::Nearest => GL_NEAREST,
+                    MinFilter::Linear => GL_LINEAR,
+                    MinFilter::NearestMipmapNearest => GL_NEAREST_MIPMAP_NEAREST,
+                    MinFilter::LinearMipmapNearest => GL_LINEAR_MIPMAP_NEAREST,
+                    MinFilter::NearestMipmapLinear => GL_NEAREST_MIPMAP_LINEAR,
+                    MinFilter::LinearMipmapLinear => GL_LINEAR_MIPMAP_LINEAR,
+                }),
+                GL_TEXTURE_MAG_FILTER => e(match t.mag_filter {
+                    MagFilter::Nearest => GL_NEAREST,
+                    MagFilter::Linear => GL_LINEAR,
+                }),
+                GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T => {
+                    let w = if pname == GL_TEXTURE_WRAP_S {
+                        t.wrap_s
+                    } else {
+                        t.wrap_t
+                    };
+                    e(match w {
+                        Wrap::Repeat => GL_REPEAT,
+                        Wrap::ClampToEdge => GL_CLAMP_TO_EDGE,
+                    })
+                }
+                GL_GENERATE_MIPMAP => e(GLenum::from(t.generate_mipmap)),
+                GL_TEXTURE_CROP_RECT_OES => Some(
+                    t.crop_rect
+                        .iter()
+                        .map(|&c| match kind {
+                            ParamKind::Fixed => fixed::from_f32(c as f32) as f64,
+                            _ => c as f64,
+                        })
+                        .collect(),
+                ),
+                _ => None,
+            }
+        });
+        if v.is_none() {
+            self.set_error(GL_INVALID_ENUM);
+        }
+        v
+    }
+
+    /// Validates `glTexImage2D`'s arguments (ES 1.1 §3.7.1). The caller then reads
+    /// `rect.len` bytes of pixels (if any) and calls [`Context::tex_image_2d`].
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_image_2d_layout(
+        &self,
+        target: GLenum,
+        level: i32,
+        internal_format: i32,
+        width: i32,
+        height: i32,
+        border: i32,
+        format: GLenum,
+        ty: GLenum,
+    ) -> Result<TexUpload, GLenum> {
+        if target != GL_TEXTURE_2D {
+            return Err(GL_INVALID_ENUM);
+        }
+        let (Some(f), Some(t)) = (base_format(format), pixel_type(ty)) else {
+            return Err(GL_INVALID_ENUM);
+        };
+        let internal = u32::try_from(internal_format).ok().and_then(base_format);
+        if internal.is_none() || !valid_image_size(level, width, height) || border != 0 {
+            return Err(GL_INVALID_VALUE);
+        }
+        if internal != Some(f) {
+            return Err(GL_INVALID_OPERATION);
+        }
+        let size = t.pixel_size(f).ok_or(GL_INVALID_OPERATION)?;
+        let rect = PixelRect::new(width as usize, height as usize, size, self.unpack_alignment)
+            .ok_or(GL_OUT_OF_MEMORY)?;
+        Ok(TexUpload {
+            level: level as usize,
+            x: 0,
+            y: 0,
+            format: f,
+            ty: t,
+            rect,
+        })
+    }
+
+    /// Specifies a level from validated arguments and the client pixels (`None`: contents
+    /// left zeroed).
+    pub fn tex_image_2d(&mut self, up: TexUpload, pixels: Option<&[u8]>) {
+        let (w, h) = (up.rect.width as u32, up.rect.height as u32);
+        let image = match pixels {
+            Some(p) => Image {
+                width: w,
+                height: h,
+                format: up.format,
+                texels: crate::core::texture::unpack(up.format, up.ty, up.rect, p),
+            },
+            None => Image::blank(w, h, up.format),
+        };
+        self.texture_changing();
+        self.with_bound_texture(|t| t.set_level(up.level, image));
+    }
+
+    /// Validates `glTexSubImage2D`'s arguments against the bound texture.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_2d_layout(
+        &mut self,
+        target: GLenum,
+        level: i32,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+        format: GLenum,
+        ty: GLenum,
+    ) -> Result<TexUpload, GLenum> {
+        if target != GL_TEXTURE_2D {
+            return Err(GL_INVALID_ENUM);
+        }
+        let (Some(f), Some(t)) = (base_format(format), pixel_type(ty)) else {
+            return Err(GL_INVALID_ENUM);
+        };
+        let level_format = self.check_sub_region(level, x, y, width, height)?;
+        if level_format != f {
+            return Err(GL_INVALID_OPERATION);
+        }
+        let size = t.pixel_size(f).ok_or(GL_INVALID_OPERATION)?;
+        let rect = PixelRect::new(width as usize, height as usize, size, self.unpack_alignment)
+            .ok_or(GL_OUT_OF_MEMORY)?;
+        Ok(TexUpload {
+            level: level as usize,
+            x: x as u32,
+            y: y as u32,
+            format: f,
+            ty: t,
+            rect,
+        })
+    }
+
+    /// The level's format when (x, y, w, h) fits inside level `level` of the bound texture:
+    /// `GL_INVALID_VALUE` for a bad level or region, `GL_INVALID_OPERATION` when the level
+    /// was never specified.
+    fn check_sub_region(
+        &mut self,
+        level: i32,
+        x: i32,
+        y: i32,
+        w: i32,
+        h: i32,
+    ) -> Result<BaseFormat, GLenum> {
+        if !(0..=MAX_LEVEL as i32).contains(&level) || w < 0 || h < 0 || x < 0 || y < 0 {
+            return Err(GL_INVALID_VALUE);
+        }
+        let dims = self.with_bound_texture(|t| {
+            t.level(level as usize)
+                .map(|i| (i.width, i.height, i.format))
+        });
+        let Some((lw, lh, format)) = dims else {
+            return Err(GL_INVALID_OPERATION);
+        };
+        if x as i64 + w as i64 > lw as i64 || y as i64 + h as i64 > lh as i64 {
+            return Err(GL_INVALID_VALUE);
+        }
+        Ok(format)
+    }
+
+    pub fn tex_sub_image_2d(&mut self, up: TexUpload, pixels: &[u8]) {
+        let texels = crate::core::texture::unpack(up.format, up.ty, up.rect, pixels);
+        let (w, h) = (up.rect.width as u32, up.rect.height as u32);
+        if w == 0 || h == 0 {
+            return;
+        }
+        self.texture_changing();
+        self.with_bound_texture(|t| t.write_region(up.level, up.x, up.y, w, h, &texels));
+    }
+
+    /// Validates `glCompressedTexImage2D`: the data must be exactly `image_size` bytes.
+    /// Returns the format and the number of levels the blob holds.
+    #[allow(clippy::too_many_arguments)]
+    pub fn compressed_tex_image_2d_check(
+        &self,
+        target: GLenum,
+        level: i32,
+        internal_format: GLenum,
+        width: i32,
+        height: i32,
+        border: i32,
+        image_size: i32,
+    ) -> Result<(PaletteFormat, usize), GLenum> {
+        if target != GL_TEXTURE_2D {
+            return Err(GL_INVALID_ENUM);
+        }
+        let Some(f) = palette_format(internal_format) else {
+            return Err(GL_INVALID_ENUM);
+        };
+        // Paletted images give level 0 and, with level -n, n further levels in one blob.
+        if level > 0
+            || level < -(MAX_LEVEL as i32)
+            || !valid_image_size(0, width, height)
+            || border != 0
+        {
+            return Err(GL_INVALID_VALUE);
+        }
+        // -level may exceed the image's own chain (as long as it stays within the largest
+        // texture's): the extra levels are 1 × 1, as the size formula counts them.
+        let levels = (1 - level) as usize;
+        if image_size < 0 {
+            return Err(GL_INVALID_VALUE);
+        }
+        if image_size as usize != f.image_size(width as u32, height as u32, levels) {
+            return Err(GL_INVALID_VALUE);
+        }
+        Ok((f, levels))
+    }
+
+    /// Specifies levels 0 .. `levels` from a paletted blob (`None`: contents zeroed).
+    pub fn compressed_tex_image_2d(
+        &mut self,
+        format: PaletteFormat,
+        levels: usize,
+        width: i32,
+        height: i32,
+        data: Option<&[u8]>,
+    ) {
+        let (w, h) = (width as u32, height as u32);
+        let images = match data.and_then(|d| format.decode(w, h, levels, d)) {
+            Some(images) => images,
+            None => {
+                let mut v = Vec::new();
+                let (mut lw, mut lh) = (w, h);
+                for _ in 0..levels {
+                    v.push(Image::blank(lw, lh, format.base_format()));
+                    (lw, lh) = ((lw / 2).max(1), (lh / 2).max(1));
+                }
+                v
+            }
+        };
+        self.texture_changing();
+        // With GENERATE_MIPMAP, a single-level blob gets its chain generated (set_level does
+        // it for level 0); an explicit chain is kept as given.
+        self.with_bound_texture(|t| {
+            let generate = t.generate_mipmap && images.len() > 1;
+            if generate {
+                t.generate_mipmap = false;
+            }
+            for (l, img) in images.into_iter().enumerate() {
+                t.set_level(l, img);
+            }
+            if generate {
+                t.generate_mipmap = true;
+            }
+        });
+    }
+
+    /// `glCompressedTexSubImage2D`: no supported compressed format allows sub-image updates,
+    /// so paletted formats are `GL_INVALID_OPERATION` (ES 1.1 §3.7.3) and anything else
+    /// `GL_INVALID_ENUM`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn compressed_tex_sub_image_2d(
+        &mut self,
+        target: GLenum,
+        level: i32,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+        format: GLenum,
+        image_size: i32,
+    ) {
+        if target != GL_TEXTURE_2D || palette_format(format).is_none() {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if !(0..=MAX_LEVEL as i32).contains(&level)
+            || x < 0
+            || y < 0
+            || width < 0
+            || height < 0
+            || image_size < 0
+        {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        self.set_error(GL_INVALID_OPERATION);
+    }
+
+    /// The read surface's color format, flushing its pending rendering first.
+    fn read_color_format(&mut self) -> Option<ColorFormat> {
+        self.flush();
+        let r = self.read.clone()?;
+        let f = lock_target(r.as_ref()).format().color;
+        Some(f)
+    }
+
+    /// `glCopyTexImage2D` (ES 1.1 §3.7.2).
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_image_2d(
+        &mut self,
+        target: GLenum,
+        level: i32,
+        internal_format: GLenum,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+        border: i32,
+    ) {
+        if target != GL_TEXTURE_2D {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let Some(format) = base_format(internal_format) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        if !valid_image_size(level, width, height) || border != 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let Some(color) = self.read_color_format() else {
+            return self.set_error(GL_INVALID_OPERATION);
+        };
+        if !copy_compatible(color, format) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let r = self.read.clone().expect("checked");
+        let texels = read_region(
+            &lock_target(r.as_ref()),
+            x,
+            y,
+            width as u32,
+            height as u32,
+            format,
+        );
+        let image = Image {
+            width: width as u32,
+            height: height as u32,
+            format,
+            texels,
+        };
+        self.texture_changing();
+        self.with_bound_texture(|t| t.set_level(level as usize, image));
+    }
+
+    /// `glCopyTexSubImage2D`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_sub_image_2d(
+        &mut self,
+        target: GLenum,
+        level: i32,
+        xoffset: i32,
+        yoffset: i32,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+    ) {
+        if target != GL_TEXTURE_2D {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let format = match self.check_sub_region(level, xoffset, yoffset, width, height) {
+            Ok(f) => f,
+            Err(e) => return self.set_error(e),
+        };
+        let Some(color) = self.read_color_format() else {
+            return self.set_error(GL_INVALID_OPERATION);
+        };
+        if !copy_compatible(color, format) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        if width == 0 || height == 0 {
+            return;
+        }
+        let r = self.read.clone().expect("checked");
+        let texels = read_region(
+            &lock_target(r.as_ref()),
+            x,
+            y,
+            width as u32,
+            height as u32,
+            format,
+        );
+        self.texture_changing();
+        self.with_bound_texture(|t| {
+            t.write_region(
+                level as usize,
+                xoffset as u32,
+                yoffset as u32,
+                width as u32,
+                height as u32,
+                &texels,
+            )
+        });
+    }
+
+    /// The texture state `glGet*` reports.
+    pub(super) fn texture_value(&mut self, pname: GLenum) -> Option<Value> {
+        Some(match pname {
+            GL_TEXTURE_BINDING_2D => Value::int(self.textures.bound[self.active_texture] as i64),
+            GL_MAX_TEXTURE_SIZE => Value::int(MAX_TEXTURE_SIZE as i64),
+            GL_NUM_COMPRESSED_TEXTURE_FORMATS => Value::int(COMPRESSED_FORMATS.len() as i64),
+            GL_COMPRESSED_TEXTURE_FORMATS => Value::ints(&COMPRESSED_FORMATS.map(|f| f as i64)),
+            _ => return None,
+        })
+    }
+
+    /// The `eglBindTexImage` hook: copies `target`'s color buffer into level 0 of the texture
+    /// bound to the active unit as RGBA (`rgba`, for `EGL_TEXTURE_RGBA`) or RGB, replacing
+    /// all levels; with `mipmap` (`EGL_MIPMAP_TEXTURE` true) the chain below is generated.
+    /// The caller has completed the surface's own rendering (EGL flushes the context that
+    /// draws into it) and locked `target`. Raises no GL error.
+    pub fn bind_tex_image(&mut self, target: &Target, rgba: bool, mipmap: bool) {
+        let format = if rgba {
+            BaseFormat::Rgba
+        } else {
+            BaseFormat::Rgb
+        };
+        let texels = read_region(target, 0, 0, target.width(), target.height(), format);
+        let image = Image {
+            width: target.width(),
+            height: target.height(),
+            format,
+            texels,
+        };
+        self.texture_changing();
+        self.with_bound_texture(|t| {
+            t.clear_levels();
+            t.set_level(0, image);
+            if mipmap {
+                t.generate_mipmaps();
+            }
+        });
+    }
+
+    /// The `eglReleaseTexImage` hook: the texture bound to the active unit loses its images.
+    pub fn release_tex_image(&mut self) {
+        self.texture_changing();
+        self.with_bound_texture(Texture::clear_levels);
+    }
+}
+
+/// A value no GL enum has, for parameters that did not convert to an integer.
+const GL_NONE_INVALID: GLenum = u32::MAX;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn image_sizes_must_be_powers_of_two_within_the_level() {
+        assert!(valid_image_size(0, 0, 0));
+        assert!(valid_image_size(0, 1, 2048));
+        assert!(!valid_image_size(0, 4096, 1));
+        assert!(!valid_image_size(0, 3, 4));
+        assert!(!valid_image_size(0, -1, 4));
+        assert!(valid_image_size(1, 1024, 1024));
+        assert!(!valid_image_size(1, 2048, 1));
+        assert!(valid_image_size(11, 1, 1));
+        assert!(!valid_image_size(12, 1, 1));
+        assert!(!valid_image_size(-1, 1, 1));
+    }
+
+    #[test]
+    fn palette_formats_in_registry_order() {
+        let f = palette_format(GL_PALETTE8_RGBA4_OES).unwrap();
+        assert_eq!((f.index_bits, f.entry), (8, PaletteEntry::Rgba4));
+        let f = palette_format(GL_PALETTE4_R5_G6_B5_OES).unwrap();
+        assert_eq!((f.index_bits, f.entry), (4, PaletteEntry::R5G6B5));
+        assert!(palette_format(GL_RGBA).is_none());
+    }
+
+    #[test]
+    fn copies_need_the_components_of_the_texture_format() {
+        assert!(copy_compatible(ColorFormat::Rgb565, BaseFormat::Luminance));
+        assert!(copy_compatible(ColorFormat::Rgb888, BaseFormat::Rgb));
+        assert!(!copy_compatible(ColorFormat::Rgb888, BaseFormat::Alpha));
+        assert!(!copy_compatible(
+            ColorFormat::Rgb565,
+            BaseFormat::LuminanceAlpha
+        ));
+        assert!(copy_compatible(ColorFormat::Rgba8888, BaseFormat::Alpha));
+    }
+}
