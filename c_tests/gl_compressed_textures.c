@@ -35,7 +35,7 @@ int main(void)
     int i, j, n;
 
     ct_init(16, 16);
-    strict = strstr((const char *)glGetString(GL_VENDOR), "gles-cm") != NULL;
+    strict = ct_strict();
 
     n = get_int(GL_NUM_COMPRESSED_TEXTURE_FORMATS);
     CHECK(n >= 10 && n <= 64);

@@ -231,8 +231,7 @@ fn build_and_run(p: &Program, imp: Implementation, out: &Path) -> Result<String,
         Implementation::Ours => cmd.env("LD_LIBRARY_PATH", lib_dir()),
         Implementation::Mesa => cmd
             .env_remove("LD_LIBRARY_PATH")
-            .env("EGL_PLATFORM", "surfaceless")
-            .env("CT_IMPL", "mesa"),
+            .env("EGL_PLATFORM", "surfaceless"),
     };
     let o = run_with_timeout(cmd)?;
     let stdout = String::from_utf8_lossy(&o.stdout).into_owned();

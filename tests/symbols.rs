@@ -244,3 +244,37 @@ int main(int argc, char **argv)
         .arg(format!("-Wl,-rpath,{}", dir.display())));
     run(&mut Command::new(&exe));
 }
+
+/// Every exported function is called by some program in `c_tests/` (or by `common.h`, which
+/// they all include): directly, or through the address `eglGetProcAddress` returns for its
+/// name. `entry_points.c` only takes addresses, so it does not count.
+#[test]
+fn every_entry_point_is_called_from_c() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("c_tests");
+    let mut sources = String::new();
+    for e in std::fs::read_dir(&dir).expect("c_tests/").flatten() {
+        let path = e.path();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        if (name.ends_with(".c") || name.ends_with(".h")) && name != "entry_points.c" {
+            sources.push_str(&std::fs::read_to_string(&path).expect("read C source"));
+        }
+    }
+    let uncalled: Vec<String> = exported()
+        .into_iter()
+        .filter(|f| f.starts_with("gl") || f.starts_with("egl"))
+        .filter(|f| {
+            let called = sources.match_indices(f.as_str()).any(|(i, _)| {
+                let before = sources[..i].chars().next_back();
+                let after = sources[i + f.len()..].chars().next();
+                let ident = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_');
+                !ident(before)
+                    && (after == Some('(') || (before == Some('"') && after == Some('"')))
+            });
+            !called
+        })
+        .collect();
+    assert!(
+        uncalled.is_empty(),
+        "exported but never called from c_tests/: {uncalled:?}"
+    );
+}

@@ -323,7 +323,8 @@ impl Context {
     /// The core's view of the current state.
     pub fn render_state(&self) -> RenderState {
         let e = &self.enables;
-        RenderState {
+        let pl = &self.points_lines;
+        let mut rs = RenderState {
             modelview: *self.modelview.last().expect("stack never empty"),
             projection: *self.projection.last().expect("stack never empty"),
             viewport: self.viewport,
@@ -337,8 +338,14 @@ impl Context {
             color_mask: self.color_mask,
             stencil_writemask: self.stencil_writemask,
             dither: e.dither,
+            line_width: pl.line_width,
+            line_smooth: e.line_smooth,
+            point_size: pl.point_size,
+            point_smooth: e.point_smooth,
             ..RenderState::new(self.viewport.width, self.viewport.height)
-        }
+        };
+        self.fragment_render_state(&mut rs);
+        rs
     }
 }
 

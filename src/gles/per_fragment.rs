@@ -1,8 +1,11 @@
 //! Per-fragment operation state (ES 1.1 §4.1) and the polygon offset (§3.5.5): alpha test,
-//! stencil test, blending, logic op, sample coverage. Only recorded here; the fragment stage
-//! reads it through this plain struct.
+//! stencil test, blending, logic op, sample coverage, and their translation into the core's
+//! [`RenderState`]. Sample coverage has no effect: no config has sample buffers.
 
-use crate::core::CompareFunc;
+use crate::core::state::{
+    AlphaTest, Blend, BlendFactor, LogicOp, PolygonOffset, StencilOp, StencilTest,
+};
+use crate::core::{CompareFunc, RenderState};
 
 use super::context::{compare_func, compare_func_enum, Context};
 use super::get::Value;
@@ -178,5 +181,85 @@ impl Context {
             GL_POLYGON_OFFSET_UNITS => Value::floats(&[s.polygon_offset_units]),
             _ => return None,
         })
+    }
+}
+
+/// The core's blend factor for a validated `glBlendFunc` enumerant.
+fn blend_factor(f: GLenum) -> BlendFactor {
+    match f {
+        GL_ZERO => BlendFactor::Zero,
+        GL_SRC_COLOR => BlendFactor::SrcColor,
+        GL_ONE_MINUS_SRC_COLOR => BlendFactor::OneMinusSrcColor,
+        GL_DST_COLOR => BlendFactor::DstColor,
+        GL_ONE_MINUS_DST_COLOR => BlendFactor::OneMinusDstColor,
+        GL_SRC_ALPHA => BlendFactor::SrcAlpha,
+        GL_ONE_MINUS_SRC_ALPHA => BlendFactor::OneMinusSrcAlpha,
+        GL_DST_ALPHA => BlendFactor::DstAlpha,
+        GL_ONE_MINUS_DST_ALPHA => BlendFactor::OneMinusDstAlpha,
+        GL_SRC_ALPHA_SATURATE => BlendFactor::SrcAlphaSaturate,
+        _ => BlendFactor::One,
+    }
+}
+
+fn stencil_op(op: GLenum) -> StencilOp {
+    match op {
+        GL_ZERO => StencilOp::Zero,
+        GL_REPLACE => StencilOp::Replace,
+        GL_INCR => StencilOp::Incr,
+        GL_DECR => StencilOp::Decr,
+        GL_INVERT => StencilOp::Invert,
+        _ => StencilOp::Keep,
+    }
+}
+
+fn logic_op(op: GLenum) -> LogicOp {
+    const OPS: [LogicOp; 16] = [
+        LogicOp::Clear,
+        LogicOp::And,
+        LogicOp::AndReverse,
+        LogicOp::Copy,
+        LogicOp::AndInverted,
+        LogicOp::Noop,
+        LogicOp::Xor,
+        LogicOp::Or,
+        LogicOp::Nor,
+        LogicOp::Equiv,
+        LogicOp::Invert,
+        LogicOp::OrReverse,
+        LogicOp::CopyInverted,
+        LogicOp::OrInverted,
+        LogicOp::Nand,
+        LogicOp::Set,
+    ];
+    // GL_CLEAR .. GL_SET are consecutive, in this order.
+    OPS.get(op.wrapping_sub(GL_CLEAR) as usize)
+        .copied()
+        .unwrap_or(LogicOp::Copy)
+}
+
+impl Context {
+    /// Fills in the per-fragment part of `rs` from the enables and this area's state.
+    pub(super) fn fragment_render_state(&self, rs: &mut RenderState) {
+        let (e, s) = (&self.enables, &self.fragment);
+        rs.alpha_test = e.alpha_test.then_some(AlphaTest {
+            func: s.alpha_func,
+            reference: s.alpha_ref,
+        });
+        rs.stencil_test = e.stencil_test.then_some(StencilTest {
+            func: s.stencil_func,
+            reference: self.effective_stencil_ref(),
+            mask: s.stencil_value_mask,
+            fail: stencil_op(s.stencil_fail),
+            depth_fail: stencil_op(s.stencil_pass_depth_fail),
+            depth_pass: stencil_op(s.stencil_pass_depth_pass),
+        });
+        rs.blend = e
+            .blend
+            .then(|| Blend::func(blend_factor(s.blend_src), blend_factor(s.blend_dst)));
+        rs.logic_op = e.color_logic_op.then(|| logic_op(s.logic_op));
+        rs.polygon_offset = e.polygon_offset_fill.then_some(PolygonOffset {
+            factor: s.polygon_offset_factor,
+            units: s.polygon_offset_units,
+        });
     }
 }
