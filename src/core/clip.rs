@@ -1,6 +1,13 @@
-//! Homogeneous clipping, before any divide: a triangle is clipped against the six frustum
-//! planes −w ≤ x, y, z ≤ w and against w ≥ [`W_MIN`], so the setup stage never divides by a
-//! w that is zero or negative.
+//! Homogeneous clipping, before any divide, so the setup stage never divides by a w that is
+//! zero or negative.
+//!
+//! Lines are clipped against the six frustum planes −w ≤ x, y, z ≤ w and w ≥ [`W_MIN`];
+//! points are kept or dropped whole by their vertex. Triangles are clipped in x and y against
+//! a guard band [`GUARD`] times wider than the frustum instead, and the rasterizer limits
+//! their pixels to the viewport rectangle, which selects exactly the pixels frustum clipping
+//! would (pixel centers never lie on the viewport's integer edges). Inside the band a
+//! triangle keeps its own vertices, so the pixels it covers do not depend on the viewport it
+//! happens to cross, and most triangles near the edges are not clipped at all.
 
 use glam::Vec4;
 
@@ -10,27 +17,45 @@ use super::vertex::ClipVertex;
 /// frustum planes, so this plane is what keeps 1/w finite.
 pub const W_MIN: f32 = 1e-30;
 
+/// The guard band's half-width in normalized device coordinates. Window coordinates then
+/// stay within (GUARD + 1) × MAX_VIEWPORT_DIM / 2 < 2¹⁶ pixels of the viewport, which keeps
+/// snapped coordinates below 2²⁴ and edge products far below 2⁶³.
+pub const GUARD: f32 = 8.0;
+
 /// Each plane adds at most one vertex: 3 + 7.
 const MAX_POLY: usize = 10;
 
-/// The signed distances of a clip-space position to each clip plane; negative is outside.
+/// The signed distances of a clip-space position to each clip plane, x and y widened by
+/// `band`; negative is outside.
 #[inline]
-fn distances(p: Vec4) -> [f32; 7] {
+fn distances_with(p: Vec4, band: f32) -> [f32; 7] {
     [
-        p.w + p.x,
-        p.w - p.x,
-        p.w + p.y,
-        p.w - p.y,
+        band * p.w + p.x,
+        band * p.w - p.x,
+        band * p.w + p.y,
+        band * p.w - p.y,
         p.w + p.z,
         p.w - p.z,
         p.w - W_MIN,
     ]
 }
 
-/// A bit per plane that the position is outside of.
+/// Distances to the frustum planes.
+#[inline]
+fn distances(p: Vec4) -> [f32; 7] {
+    distances_with(p, 1.0)
+}
+
+/// Distances to the guard band's planes (x, y) and the frustum's (z, w).
+#[inline]
+fn guard_distances(p: Vec4) -> [f32; 7] {
+    distances_with(p, GUARD)
+}
+
+/// A bit per plane (of the guard band) that the position is outside of.
 #[inline]
 pub fn outcode(p: Vec4) -> u8 {
-    let d = distances(p);
+    let d = guard_distances(p);
     let mut code = 0;
     for (i, &v) in d.iter().enumerate() {
         // NaN compares false, so it counts as outside too.
@@ -70,7 +95,7 @@ pub fn line(a: &ClipVertex, b: &ClipVertex) -> Option<(ClipVertex, ClipVertex)> 
 /// True when a point survives clipping: its vertex lies inside the clip volume. (A wide
 /// point whose center is inside is drawn whole; one whose center is outside is not drawn.)
 pub fn point(v: &ClipVertex) -> bool {
-    v.pos.is_finite() && outcode(v.pos) == 0
+    v.pos.is_finite() && distances(v.pos).iter().all(|&d| d >= 0.0)
 }
 
 /// Clips triangle (a, b, c) and calls `emit` with the resulting convex polygon (at least three
@@ -102,7 +127,7 @@ pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnc
         let mut m = 0;
         for i in 0..n {
             let (p, q) = (&poly[i], &poly[(i + 1) % n]);
-            let (dp, dq) = (distances(p.pos)[plane], distances(q.pos)[plane]);
+            let (dp, dq) = (guard_distances(p.pos)[plane], guard_distances(q.pos)[plane]);
             if dp >= 0.0 {
                 next[m] = *p;
                 m += 1;
@@ -156,12 +181,22 @@ mod tests {
         assert_eq!(got, 3);
         let mut called = false;
         triangle(
+            &v(20., 0., 0., 1.),
+            &v(30., 0., 0., 1.),
+            &v(20., 1., 0., 1.),
+            |_| called = true,
+        );
+        assert!(!called, "beyond the guard band");
+        triangle(
             &v(2., 0., 0., 1.),
             &v(3., 0., 0., 1.),
             &v(2., 1., 0., 1.),
-            |_| called = true,
+            |p| got = p.len(),
         );
-        assert!(!called);
+        assert_eq!(
+            got, 3,
+            "outside the frustum but inside the band: kept whole"
+        );
     }
 
     #[test]
@@ -176,7 +211,8 @@ mod tests {
         assert!(out.len() >= 3);
         for p in &out {
             assert!(p.pos.w >= W_MIN, "{:?}", p.pos);
-            assert!(p.pos.x.abs() <= p.pos.w * 1.0001 && p.pos.z.abs() <= p.pos.w * 1.0001);
+            assert!(p.pos.x.abs() <= p.pos.w * GUARD * 1.0001);
+            assert!(p.pos.z.abs() <= p.pos.w * 1.0001);
         }
     }
 
@@ -189,7 +225,7 @@ mod tests {
             &v(-10., 30., 0., 1.),
             |p| n = p.len(),
         );
-        assert_eq!(n, 4, "clipped to the viewport square");
+        assert_eq!(n, 4, "clipped to the guard band's square");
         triangle(
             &v(-100., -10., -5., 1.),
             &v(100., -10., 5., 1.),

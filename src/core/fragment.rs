@@ -16,8 +16,8 @@
 use super::raster::Span;
 use super::setup::Shading;
 use super::state::{
-    AlphaTest, Blend, BlendEquation, BlendFactor, CompareFunc, LogicOp, RenderState, StencilOp,
-    StencilTest,
+    AlphaTest, Blend, BlendEquation, BlendFactor, CompareFunc, LogicOp, Quality, RenderState,
+    StencilOp, StencilTest,
 };
 use super::target::{expand_to_8, keep_mask, BandMut, ColorFormat, DepthFormat, TargetFormat};
 
@@ -54,6 +54,7 @@ pub struct FragmentKey {
     /// Ordered dithering, only where it changes something: channels narrower than 8 bits.
     dither: bool,
     flat: bool,
+    perspective: Quality,
     route: Route,
 }
 
@@ -81,6 +82,7 @@ impl FragmentKey {
             logic_op,
             dither,
             flat: state.shade_model == super::state::ShadeModel::Flat,
+            perspective: state.perspective,
             route: Route::General,
         };
         key.route = if key.stencil.is_none() && keep == u32::MAX && !key.depth_write {
@@ -127,7 +129,21 @@ impl FragmentKey {
     }
 }
 
-/// Interpolates a triangle's color and depth along one span: values at the span's first
+/// Pixels between exact perspective divides under `GL_PERSPECTIVE_CORRECTION_HINT`
+/// `GL_FASTEST`; colors are interpolated linearly in between.
+pub const PERSPECTIVE_STEP: usize = 8;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Divide {
+    /// w is the same at every vertex (no perspective): colors are linear, no divide.
+    None,
+    /// A divide per pixel.
+    Exact,
+    /// A divide every [`PERSPECTIVE_STEP`] pixels.
+    Stepped,
+}
+
+/// Interpolates a primitive's color and depth along one span: values at the span's first
 /// pixel plus a per-pixel step, evaluated as `start + i·step` so error does not accumulate.
 struct SpanInterp {
     z0: f64,
@@ -136,19 +152,45 @@ struct SpanInterp {
     d_inv_w: f32,
     c0: [f32; 4],
     dc: [f32; 4],
+    divide: Divide,
+    len: usize,
+    /// Under `Stepped`: the first pixel of the run `color` last set up, the color there and
+    /// the linear step to the next exact divide.
+    run: usize,
+    run_c: [f32; 4],
+    run_dc: [f32; 4],
 }
 
 impl SpanInterp {
     #[inline]
-    fn new(t: &Shading, span: Span) -> SpanInterp {
+    fn new(t: &Shading, span: Span, perspective: Quality) -> SpanInterp {
         let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
+        let mut c0 = t.color_w.map(|p| p.at(px, py) as f32);
+        let mut dc = t.color_w.map(|p| p.dx as f32);
+        let inv_w0 = t.inv_w.at(px, py) as f32;
+        let divide = if t.inv_w.dx == 0.0 && t.inv_w.dy == 0.0 {
+            // Constant w: fold it into the planes once.
+            let w = 1.0 / inv_w0;
+            c0 = c0.map(|c| c * w);
+            dc = dc.map(|c| c * w);
+            Divide::None
+        } else if perspective == Quality::Fastest {
+            Divide::Stepped
+        } else {
+            Divide::Exact
+        };
         SpanInterp {
             z0: t.z.at(px, py),
             dz: t.z.dx,
-            inv_w0: t.inv_w.at(px, py) as f32,
+            inv_w0,
             d_inv_w: t.inv_w.dx as f32,
-            c0: t.color_w.map(|p| p.at(px, py) as f32),
-            dc: t.color_w.map(|p| p.dx as f32),
+            c0,
+            dc,
+            divide,
+            len: (span.x1 - span.x0) as usize,
+            run: usize::MAX,
+            run_c: [0.0; 4],
+            run_dc: [0.0; 4],
         }
     }
 
@@ -157,12 +199,37 @@ impl SpanInterp {
         self.z0 + self.dz * i as f64
     }
 
-    /// The perspective-correct color at pixel `i` of the span.
     #[inline]
-    fn color(&self, i: usize) -> [f32; 4] {
+    fn exact(&self, i: usize) -> [f32; 4] {
         let fi = i as f32;
         let w = 1.0 / (self.inv_w0 + self.d_inv_w * fi);
         std::array::from_fn(|c| (self.c0[c] + self.dc[c] * fi) * w)
+    }
+
+    /// The color at pixel `i` of the span.
+    #[inline]
+    fn color(&mut self, i: usize) -> [f32; 4] {
+        match self.divide {
+            Divide::None => {
+                let fi = i as f32;
+                std::array::from_fn(|c| self.c0[c] + self.dc[c] * fi)
+            }
+            Divide::Exact => self.exact(i),
+            Divide::Stepped => {
+                let start = i - i % PERSPECTIVE_STEP;
+                if start != self.run {
+                    // Both ends of the run are inside the span, where 1/w is positive.
+                    let end = (start + PERSPECTIVE_STEP).min(self.len - 1);
+                    let (a, b) = (self.exact(start), self.exact(end));
+                    let n = (end - start).max(1) as f32;
+                    self.run = start;
+                    self.run_c = a;
+                    self.run_dc = std::array::from_fn(|c| (b[c] - a[c]) / n);
+                }
+                let k = (i - start) as f32;
+                std::array::from_fn(|c| self.run_c[c] + self.run_dc[c] * k)
+            }
+        }
     }
 }
 
@@ -173,7 +240,7 @@ fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     span: Span,
     band: &mut BandMut<'_>,
 ) {
-    let interp = SpanInterp::new(t, span);
+    let mut interp = SpanInterp::new(t, span, k.perspective);
     let row = (span.y - band.y0) as usize * band.width;
     let flat = t.flat.unwrap_or_default();
     let flat_word = k.color.encode(flat);
@@ -209,7 +276,7 @@ fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
 
 /// The routine for every key: each enabled operation, per pixel, in the specification's order.
 fn general(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
-    let interp = SpanInterp::new(t, span);
+    let mut interp = SpanInterp::new(t, span, k.perspective);
     let row = (span.y - band.y0) as usize * band.width;
     for (i, x) in (span.x0..span.x1).enumerate() {
         let at = row + x as usize;

@@ -92,9 +92,15 @@ pub struct Shading {
 }
 
 /// Antialiasing coverage: the share of a pixel's square inside the primitive, estimated
-/// with 4 × 4 samples (so in steps of 1/16).
+/// with `samples` × `samples` sample points (the hint decides how many).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Coverage {
+pub struct Coverage {
+    pub shape: Shape,
+    pub samples: i32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shape {
     /// A rectangle along a line: from (x, y) in unit direction (ux, uy) for `len`, `half`
     /// to either side.
     Line {
@@ -110,18 +116,16 @@ pub enum Coverage {
 }
 
 impl Coverage {
-    pub const SAMPLES: i32 = 4;
-
     /// The covered share of pixel (px, py), in [0, 1].
     pub fn at(&self, px: i32, py: i32) -> f32 {
-        let n = Self::SAMPLES;
+        let n = self.samples;
         let mut hits = 0;
         for sy in 0..n {
             for sx in 0..n {
                 let x = px as f64 + (sx as f64 + 0.5) / n as f64;
                 let y = py as f64 + (sy as f64 + 0.5) / n as f64;
-                let inside = match *self {
-                    Coverage::Line {
+                let inside = match self.shape {
+                    Shape::Line {
                         x: x0,
                         y: y0,
                         ux,
@@ -134,7 +138,7 @@ impl Coverage {
                         let across = dx * uy - dy * ux;
                         (0.0..len).contains(&along) && across.abs() < half
                     }
-                    Coverage::Point {
+                    Shape::Point {
                         x: cx,
                         y: cy,
                         radius,
@@ -178,10 +182,11 @@ pub fn triangle(
         let p = v[i].pos;
         debug_assert!(p.w >= clip::W_MIN);
         let iw = 1.0 / p.w as f64;
-        // Clipping bounds |x/w| and |y/w| by 1; the clamp only removes rounding excess, and
-        // keeps a w near W_MIN from producing huge coordinates.
-        let x = (p.x as f64 * iw).clamp(-1.0, 1.0) * hw + cx;
-        let y = (p.y as f64 * iw).clamp(-1.0, 1.0) * hh + cy;
+        // Clipping bounds |x/w| and |y/w| by the guard band; the clamp only removes rounding
+        // excess, and keeps a w near W_MIN from producing huge coordinates.
+        let g = clip::GUARD as f64;
+        let x = (p.x as f64 * iw).clamp(-g, g) * hw + cx;
+        let y = (p.y as f64 * iw).clamp(-g, g) * hh + cy;
         win[i] = (
             (x * ONE as f64).round() as i64,
             (y * ONE as f64).round() as i64,

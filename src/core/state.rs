@@ -190,6 +190,31 @@ pub struct PolygonOffset {
     pub units: f32,
 }
 
+/// What a hint asks for (ARCHITECTURE decision 4). The GL's `GL_DONT_CARE` maps to one of
+/// these per hint, chosen with the benchmark's figures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Quality {
+    /// Documented shortcuts: colors and texture coordinates divided by w exactly only
+    /// every [`crate::core::fragment::PERSPECTIVE_STEP`] pixels and interpolated linearly
+    /// in between; 2 × 2 coverage samples for antialiased points and lines.
+    Fastest,
+    /// The default: exact perspective, 4 × 4 coverage samples.
+    Balanced,
+    /// Exact perspective, 8 × 8 coverage samples.
+    Nicest,
+}
+
+impl Quality {
+    /// Coverage samples per pixel side for antialiased points and lines.
+    pub fn coverage_samples(self) -> i32 {
+        match self {
+            Quality::Fastest => 2,
+            Quality::Balanced => 4,
+            Quality::Nicest => 8,
+        }
+    }
+}
+
 /// The viewport rectangle in window pixels (width and height already clamped to the maximum).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Viewport {
@@ -229,6 +254,10 @@ pub struct RenderState {
     /// `glPointSize` and `GL_POINT_SMOOTH`.
     pub point_size: f32,
     pub point_smooth: bool,
+    /// `GL_PERSPECTIVE_CORRECTION_HINT`, `GL_LINE_SMOOTH_HINT`, `GL_POINT_SMOOTH_HINT`.
+    pub perspective: Quality,
+    pub line_quality: Quality,
+    pub point_quality: Quality,
 }
 
 impl RenderState {
@@ -263,6 +292,9 @@ impl RenderState {
             line_smooth: false,
             point_size: 1.0,
             point_smooth: false,
+            perspective: Quality::Balanced,
+            line_quality: Quality::Balanced,
+            point_quality: Quality::Balanced,
         }
     }
 

@@ -6,6 +6,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 
 use glam::Mat4;
 
+use crate::core::state::Quality;
 use crate::core::{
     bin, CompareFunc, CullFace, Frame, Rect, RenderState, ShadeModel, Target, TargetFormat,
     Viewport, Winding,
@@ -342,10 +343,23 @@ impl Context {
             line_smooth: e.line_smooth,
             point_size: pl.point_size,
             point_smooth: e.point_smooth,
+            perspective: quality(self.hints.perspective_correction),
+            line_quality: quality(self.hints.line_smooth),
+            point_quality: quality(self.hints.point_smooth),
             ..RenderState::new(self.viewport.width, self.viewport.height)
         };
         self.fragment_render_state(&mut rs);
         rs
+    }
+}
+
+/// What a hint's mode asks of the core; `GL_DONT_CARE` is the balanced default (see the
+/// README's figures).
+fn quality(mode: GLenum) -> Quality {
+    match mode {
+        GL_FASTEST => Quality::Fastest,
+        GL_NICEST => Quality::Nicest,
+        _ => Quality::Balanced,
     }
 }
 

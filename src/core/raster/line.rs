@@ -11,7 +11,7 @@
 //! Colors and depth are interpolated with t, the projection of the pixel center onto the
 //! segment, perspective-correctly for colors and linearly for depth.
 
-use super::super::setup::{Coverage, Plane, Shading};
+use super::super::setup::{Coverage, Plane, Shading, Shape};
 use super::super::state::{RenderState, ShadeModel};
 use super::super::target::Rect;
 use super::super::vertex::ClipVertex;
@@ -104,13 +104,16 @@ pub fn setup(
             y1: hi(&ys),
         }
         .intersect(bounds);
-        let coverage = Coverage::Line {
-            x: ax,
-            y: ay,
-            ux,
-            uy,
-            len,
-            half,
+        let coverage = Coverage {
+            shape: Shape::Line {
+                x: ax,
+                y: ay,
+                ux,
+                uy,
+                len,
+                half,
+            },
+            samples: state.line_quality.coverage_samples(),
         };
         return (!bbox.is_empty()).then(|| Line {
             bbox,

@@ -5,7 +5,7 @@
 //! position; each fragment's alpha is multiplied by the covered share of its pixel. A point
 //! is one color and one depth.
 
-use super::super::setup::{Coverage, Plane, Shading};
+use super::super::setup::{Coverage, Plane, Shading, Shape};
 use super::super::state::RenderState;
 use super::super::target::Rect;
 use super::super::vertex::ClipVertex;
@@ -31,7 +31,11 @@ pub fn setup(state: &RenderState, v: &ClipVertex, bounds: Rect) -> Option<Point>
             x1: to_i((x + r).ceil()),
             y1: to_i((y + r).ceil()),
         };
-        (rect, Some(Coverage::Point { x, y, radius: r }))
+        let coverage = Coverage {
+            shape: Shape::Point { x, y, radius: r },
+            samples: state.point_quality.coverage_samples(),
+        };
+        (rect, Some(coverage))
     } else {
         let s = size.round().max(1.0);
         let snap = |c: f64| {

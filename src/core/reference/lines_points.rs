@@ -1,8 +1,8 @@
 //! Reference lines and points, per pixel and literal: the diamond-exit rule for aliased
 //! segments (with the specification's perturbation of the endpoints), the offset segment
 //! and replicated fragments for wide ones, the rectangle and the disc for antialiased ones
-//! with coverage as area (estimated with 16 × 16 samples, far finer than the fast path's
-//! 4 × 4), and the snapped square for aliased points.
+//! with coverage as area (estimated with 32 × 32 samples, far finer than the fast path's
+//! 2 × 2 to 8 × 8), and the snapped square for aliased points.
 
 use glam::DVec4;
 
@@ -12,7 +12,7 @@ use crate::core::state::{RenderState, ShadeModel};
 use crate::core::target::{Rect, Target};
 
 const MAX_SIZE: f64 = 64.0;
-const AREA_SAMPLES: i32 = 16;
+const AREA_SAMPLES: i32 = 32;
 
 /// Window x, y, z and 1/w of a clip-space position (inside the clip volume).
 fn window(state: &RenderState, p: DVec4) -> (f64, f64, f64, f64) {
