@@ -27,7 +27,19 @@ impl ColorFormat {
 
     /// Converts a color in [0, 1] (clamped here) to the stored RGBA8 word, rounding to the
     /// nearest value the format can hold: `round(c · (2ⁿ − 1))`.
+    #[inline]
     pub fn encode(self, rgba: [f32; 4]) -> u32 {
+        let byte = |c: f32| unorm(c, 8);
+        match self {
+            ColorFormat::Rgba8888 => u32::from_le_bytes(rgba.map(|c| byte(c) as u8)),
+            ColorFormat::Rgb888 => {
+                byte(rgba[0]) | byte(rgba[1]) << 8 | byte(rgba[2]) << 16 | 0xFF00_0000
+            }
+            ColorFormat::Rgb565 => self.encode_narrow(rgba),
+        }
+    }
+
+    fn encode_narrow(self, rgba: [f32; 4]) -> u32 {
         let b = self.bits();
         let mut bytes = [0u8; 4];
         for i in 0..4 {
@@ -56,6 +68,7 @@ impl ColorFormat {
 }
 
 /// `round(clamp(c) · (2ⁿ − 1))`; NaN maps to 0 so garbage never reaches memory.
+#[inline]
 pub fn unorm(c: f32, bits: u32) -> u32 {
     let max = ((1u32 << bits) - 1) as f32;
     let c = if c > 0.0 { c.min(1.0) } else { 0.0 };

@@ -64,6 +64,26 @@ fn clip(poly: Vec<Vtx>) -> Vec<Vtx> {
     poly
 }
 
+/// Renders `draws` with `state` both ways, each onto a copy of `base`: the fast pipeline
+/// (on `threads` threads) and this reference. Returns both images and the fast one's error.
+pub fn measure(
+    state: &RenderState,
+    draws: &[DrawCall<'_>],
+    base: &Target,
+    threads: usize,
+) -> (Target, Target, ErrorStats) {
+    let (mut fast, mut slow) = (base.clone(), base.clone());
+    let mut frame = super::Frame::new(base.width(), base.height(), base.format());
+    for d in draws {
+        // Out of memory leaves the fast image short, which the error then shows.
+        let _ = super::record(state, d, &mut frame);
+        render(state, d, &mut slow);
+    }
+    frame.flush(&mut fast, threads);
+    let e = compare(&fast, &slow);
+    (fast, slow, e)
+}
+
 /// Renders `draw` into `target` the literal way.
 pub fn render(state: &RenderState, draw: &DrawCall<'_>, target: &mut Target) {
     let mvp = state.projection.as_dmat4() * state.modelview.as_dmat4();
