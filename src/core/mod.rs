@@ -20,6 +20,9 @@ pub use state::{CompareFunc, CullFace, RenderState, ShadeModel, Viewport, Windin
 pub use target::{ColorFormat, DepthFormat, Rect, Target, TargetFormat};
 pub use vertex::{AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
+/// Texture units (`GL_MAX_TEXTURE_UNITS`).
+pub const TEXTURE_UNITS: usize = 4;
+
 /// The subpixel precision of window coordinates: positions snap to 1/2⁸ pixel.
 pub const SUBPIXEL_BITS: u32 = 8;
 /// The largest viewport width and height. With [`SUBPIXEL_BITS`] and the guard band

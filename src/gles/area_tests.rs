@@ -5,9 +5,10 @@ use std::sync::{Arc, Mutex};
 
 use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
 
-use super::context::{Context, Surface};
+use super::context::{Context, Surface, MAX_TEXTURE_UNITS};
 use super::params::{fixed_reply, Params};
 use super::tokens::*;
+use super::types::*;
 
 struct Memory(Mutex<Target>);
 
@@ -232,7 +233,8 @@ fn current_values_and_units() {
         [0.0, 0.0, 0.0, 1.0]
     );
     c.multi_tex_coord(GL_TEXTURE1, [1.0, 2.0, 3.0, 4.0]);
-    c.multi_tex_coord(GL_TEXTURE2, [1.0, 2.0, 3.0, 4.0]);
+    let beyond = GL_TEXTURE0 + MAX_TEXTURE_UNITS as GLenum;
+    c.multi_tex_coord(beyond, [1.0, 2.0, 3.0, 4.0]);
     assert_eq!(c.take_error(), GL_INVALID_ENUM);
     c.active_texture(GL_TEXTURE1);
     assert_eq!(
@@ -240,7 +242,7 @@ fn current_values_and_units() {
         [1.0, 2.0, 3.0, 4.0]
     );
     assert_eq!(ints(&mut c, GL_ACTIVE_TEXTURE), [GL_TEXTURE1 as i32]);
-    c.active_texture(GL_TEXTURE0 + 2);
+    c.active_texture(beyond);
     assert_eq!(c.take_error(), GL_INVALID_ENUM);
     c.client_active_texture(GL_TEXTURE1);
     c.array_pointer(super::arrays::ArrayKind::TexCoord, 2, GL_SHORT, 8, 0x1000);

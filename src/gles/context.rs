@@ -40,7 +40,7 @@ pub struct SharedObjects {
     pub buffers: super::buffer::BufferNames,
 }
 
-pub const MAX_TEXTURE_UNITS: usize = 2;
+pub const MAX_TEXTURE_UNITS: usize = crate::core::TEXTURE_UNITS;
 pub const MAX_LIGHTS: usize = 8;
 pub const MAX_CLIP_PLANES: usize = 6;
 pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;

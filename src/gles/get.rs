@@ -212,6 +212,8 @@ impl Context {
                 Value::ints(&[MAX_VIEWPORT_DIM as i64, MAX_VIEWPORT_DIM as i64])
             }
             GL_SUBPIXEL_BITS => Value::int(SUBPIXEL_BITS as i64),
+            // Every config is single-sample.
+            GL_SAMPLE_BUFFERS | GL_SAMPLES => Value::int(0),
             GL_RED_BITS => Value::int(bits[0] as i64),
             GL_GREEN_BITS => Value::int(bits[1] as i64),
             GL_BLUE_BITS => Value::int(bits[2] as i64),
