@@ -108,8 +108,26 @@ pub const RENDERER: &[u8] = b"gles-cm software rasterizer\0";
 pub const VERSION: &[u8] =
     concat!("OpenGL ES-CM 1.1 gles-cm-", env!("CARGO_PKG_VERSION"), "\0").as_bytes();
 /// Exactly the extensions that are implemented, space-separated.
-pub const EXTENSIONS: &[u8] =
-    b"GL_OES_read_format GL_OES_compressed_paletted_texture GL_OES_mapbuffer\0";
+/// The extensions `GL_EXTENSIONS` names, one per line (add a line where one starts working).
+const EXTENSION_LIST: &[&str] = &[
+    "GL_OES_read_format",
+    "GL_OES_compressed_paletted_texture",
+    "GL_OES_mapbuffer",
+    "GL_OES_blend_subtract",
+    "GL_OES_blend_func_separate",
+    "GL_OES_blend_equation_separate",
+    "GL_OES_stencil_wrap",
+];
+
+/// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
+fn extensions() -> &'static [u8] {
+    static STRING: std::sync::OnceLock<Vec<u8>> = std::sync::OnceLock::new();
+    STRING.get_or_init(|| {
+        let mut s = EXTENSION_LIST.join(" ").into_bytes();
+        s.push(0);
+        s
+    })
+}
 
 impl Context {
     /// The NUL-terminated string for `glGetString`, or `None` for an invalid name.
@@ -118,7 +136,7 @@ impl Context {
             GL_VENDOR => VENDOR,
             GL_RENDERER => RENDERER,
             GL_VERSION => VERSION,
-            GL_EXTENSIONS => EXTENSIONS,
+            GL_EXTENSIONS => extensions(),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

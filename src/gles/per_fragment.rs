@@ -3,7 +3,7 @@
 //! [`RenderState`]. Sample coverage has no effect: no config has sample buffers.
 
 use crate::core::state::{
-    AlphaTest, Blend, BlendFactor, LogicOp, PolygonOffset, StencilOp, StencilTest,
+    AlphaTest, Blend, BlendEquation, BlendFactor, LogicOp, PolygonOffset, StencilOp, StencilTest,
 };
 use crate::core::{CompareFunc, RenderState};
 
@@ -11,6 +11,7 @@ use super::context::{compare_func, compare_func_enum, Context};
 use super::get::Value;
 use super::params::clamp01;
 use super::tokens::*;
+use super::tokens_ext::*;
 use super::types::*;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -18,9 +19,15 @@ pub struct FragmentState {
     pub alpha_func: CompareFunc,
     /// Clamped to [0, 1] when specified.
     pub alpha_ref: f32,
-    /// `GL_BLEND_SRC` / `GL_BLEND_DST` factors, as their enumerants.
+    /// Blend factors for color and alpha (`glBlendFunc` sets both pairs;
+    /// `OES_blend_func_separate` each), as their enumerants.
     pub blend_src: GLenum,
     pub blend_dst: GLenum,
+    pub blend_src_alpha: GLenum,
+    pub blend_dst_alpha: GLenum,
+    /// `OES_blend_subtract` / `OES_blend_equation_separate` equations for color and alpha.
+    pub blend_eq: GLenum,
+    pub blend_eq_alpha: GLenum,
     pub logic_op: GLenum,
     pub stencil_func: CompareFunc,
     /// As given; clamped to [0, 2^s - 1] where it is used and queried.
@@ -43,6 +50,10 @@ impl Default for FragmentState {
             alpha_ref: 0.0,
             blend_src: GL_ONE,
             blend_dst: GL_ZERO,
+            blend_src_alpha: GL_ONE,
+            blend_dst_alpha: GL_ZERO,
+            blend_eq: GL_FUNC_ADD_OES,
+            blend_eq_alpha: GL_FUNC_ADD_OES,
             logic_op: GL_COPY,
             stencil_func: CompareFunc::Always,
             stencil_ref: 0,
@@ -89,11 +100,28 @@ fn is_blend_dst(f: GLenum) -> bool {
     )
 }
 
+/// `glStencilOp` operations, with `OES_stencil_wrap`'s two.
 fn is_stencil_op(op: GLenum) -> bool {
     matches!(
         op,
-        GL_KEEP | GL_ZERO | GL_REPLACE | GL_INCR | GL_DECR | GL_INVERT
+        GL_KEEP
+            | GL_ZERO
+            | GL_REPLACE
+            | GL_INCR
+            | GL_DECR
+            | GL_INVERT
+            | GL_INCR_WRAP_OES
+            | GL_DECR_WRAP_OES
     )
+}
+
+fn blend_equation(mode: GLenum) -> Option<BlendEquation> {
+    Some(match mode {
+        GL_FUNC_ADD_OES => BlendEquation::Add,
+        GL_FUNC_SUBTRACT_OES => BlendEquation::Subtract,
+        GL_FUNC_REVERSE_SUBTRACT_OES => BlendEquation::ReverseSubtract,
+        _ => return None,
+    })
 }
 
 impl Context {
@@ -111,8 +139,25 @@ impl Context {
         if !is_blend_src(src) || !is_blend_dst(dst) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.fragment.blend_src = src;
-        self.fragment.blend_dst = dst;
+        self.blend_func_separate(src, dst, src, dst);
+    }
+
+    /// `glBlendFuncSeparateOES`: the factor sets are those of `glBlendFunc`.
+    pub fn blend_func_separate(&mut self, src: GLenum, dst: GLenum, src_a: GLenum, dst_a: GLenum) {
+        if !is_blend_src(src) || !is_blend_dst(dst) || !is_blend_src(src_a) || !is_blend_dst(dst_a)
+        {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let s = &mut self.fragment;
+        (s.blend_src, s.blend_dst, s.blend_src_alpha, s.blend_dst_alpha) = (src, dst, src_a, dst_a);
+    }
+
+    /// `glBlendEquationSeparateOES` (and `glBlendEquationOES` with one mode for both).
+    pub fn blend_equation(&mut self, rgb: GLenum, alpha: GLenum) {
+        if blend_equation(rgb).is_none() || blend_equation(alpha).is_none() {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        (self.fragment.blend_eq, self.fragment.blend_eq_alpha) = (rgb, alpha);
     }
 
     pub fn logic_op(&mut self, op: GLenum) {
@@ -168,6 +213,12 @@ impl Context {
             GL_ALPHA_TEST_REF => Value::norm(&[s.alpha_ref]),
             GL_BLEND_SRC => e(s.blend_src),
             GL_BLEND_DST => e(s.blend_dst),
+            GL_BLEND_SRC_RGB_OES => e(s.blend_src),
+            GL_BLEND_DST_RGB_OES => e(s.blend_dst),
+            GL_BLEND_SRC_ALPHA_OES => e(s.blend_src_alpha),
+            GL_BLEND_DST_ALPHA_OES => e(s.blend_dst_alpha),
+            GL_BLEND_EQUATION_RGB_OES => e(s.blend_eq),
+            GL_BLEND_EQUATION_ALPHA_OES => e(s.blend_eq_alpha),
             GL_LOGIC_OP_MODE => e(s.logic_op),
             GL_STENCIL_FUNC => e(compare_func_enum(s.stencil_func)),
             GL_STENCIL_REF => Value::int(self.effective_stencil_ref() as i64),
@@ -208,6 +259,8 @@ fn stencil_op(op: GLenum) -> StencilOp {
         GL_INCR => StencilOp::Incr,
         GL_DECR => StencilOp::Decr,
         GL_INVERT => StencilOp::Invert,
+        GL_INCR_WRAP_OES => StencilOp::IncrWrap,
+        GL_DECR_WRAP_OES => StencilOp::DecrWrap,
         _ => StencilOp::Keep,
     }
 }
@@ -253,9 +306,15 @@ impl Context {
             depth_fail: stencil_op(s.stencil_pass_depth_fail),
             depth_pass: stencil_op(s.stencil_pass_depth_pass),
         });
-        rs.blend = e
-            .blend
-            .then(|| Blend::func(blend_factor(s.blend_src), blend_factor(s.blend_dst)));
+        let eq = |m| blend_equation(m).unwrap_or(BlendEquation::Add);
+        rs.blend = e.blend.then(|| Blend {
+            src_rgb: blend_factor(s.blend_src),
+            dst_rgb: blend_factor(s.blend_dst),
+            src_alpha: blend_factor(s.blend_src_alpha),
+            dst_alpha: blend_factor(s.blend_dst_alpha),
+            eq_rgb: eq(s.blend_eq),
+            eq_alpha: eq(s.blend_eq_alpha),
+        });
         rs.logic_op = e.color_logic_op.then(|| logic_op(s.logic_op));
         rs.polygon_offset = e.polygon_offset_fill.then_some(PolygonOffset {
             factor: s.polygon_offset_factor,

@@ -22,6 +22,28 @@ pub extern "C" fn glBlendFunc(sfactor: GLenum, dfactor: GLenum) {
 }
 
 #[no_mangle]
+pub extern "C" fn glBlendFuncSeparateOES(
+    src_rgb: GLenum,
+    dst_rgb: GLenum,
+    src_alpha: GLenum,
+    dst_alpha: GLenum,
+) {
+    with_context((), |c| {
+        c.blend_func_separate(src_rgb, dst_rgb, src_alpha, dst_alpha)
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn glBlendEquationOES(mode: GLenum) {
+    with_context((), |c| c.blend_equation(mode, mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glBlendEquationSeparateOES(mode_rgb: GLenum, mode_alpha: GLenum) {
+    with_context((), |c| c.blend_equation(mode_rgb, mode_alpha))
+}
+
+#[no_mangle]
 pub extern "C" fn glLogicOp(opcode: GLenum) {
     with_context((), |c| c.logic_op(opcode))
 }
