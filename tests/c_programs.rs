@@ -7,6 +7,8 @@
 //! - `GLES_CM_DIFF=mesa`: also builds each program against Mesa's `libEGL`/`libGLESv1_CM`
 //!   (see `../shared/mesa/`), requires it to pass there too, and compares every saved image
 //!   with ours (tolerance in [`DIFF_TOLERANCE`]). Programs marked `ct:no-diff` are skipped.
+//!   Mesa's default driver, llvmpipe, runs them; `GLES_CM_DIFF=softpipe` does the same with
+//!   `GALLIUM_DRIVER=softpipe` in the Mesa run's environment (see `softpipe()`).
 //! - `GLES_CM_VALGRIND=1`: runs each program (ours only) under valgrind's memcheck; any
 //!   error, or a definite leak, fails the program.
 //! - `CT_FILTER=substring`: only programs whose name contains it.
@@ -198,6 +200,12 @@ fn run_with_timeout(mut cmd: Command) -> Result<Output, String> {
     })
 }
 
+/// True when `GLES_CM_DIFF=softpipe`: the differential run uses Mesa's softpipe driver
+/// instead of its default, llvmpipe.
+fn softpipe() -> bool {
+    std::env::var("GLES_CM_DIFF").is_ok_and(|v| v == "softpipe")
+}
+
 fn valgrind() -> bool {
     std::env::var("GLES_CM_VALGRIND").is_ok_and(|v| v == "1")
 }
@@ -229,9 +237,14 @@ fn build_and_run(p: &Program, imp: Implementation, out: &Path) -> Result<String,
     // library (`target/<profile>/libGLES_CM.so`) ahead of the rpath: name the one under test.
     match imp {
         Implementation::Ours => cmd.env("LD_LIBRARY_PATH", lib_dir()),
-        Implementation::Mesa => cmd
-            .env_remove("LD_LIBRARY_PATH")
-            .env("EGL_PLATFORM", "surfaceless"),
+        Implementation::Mesa => {
+            cmd.env_remove("LD_LIBRARY_PATH")
+                .env("EGL_PLATFORM", "surfaceless");
+            if softpipe() {
+                cmd.env("GALLIUM_DRIVER", "softpipe");
+            }
+            &mut cmd
+        }
     };
     let o = run_with_timeout(cmd)?;
     let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
@@ -357,8 +370,10 @@ fn diff(a: &image::RgbaImage, b: &image::RgbaImage) -> Diff {
 
 #[test]
 fn differential_against_mesa() {
-    if std::env::var("GLES_CM_DIFF").ok().as_deref() != Some("mesa") {
-        println!("skipped: set GLES_CM_DIFF=mesa to compare with Mesa (see ../shared/mesa/)");
+    if std::env::var("GLES_CM_DIFF").ok().as_deref() != Some("mesa") && !softpipe() {
+        println!(
+            "skipped: set GLES_CM_DIFF=mesa (or softpipe) to compare with Mesa (see ../shared/mesa/)"
+        );
         return;
     }
     let programs: Vec<Program> = programs()

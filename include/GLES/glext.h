@@ -28,6 +28,10 @@ extern "C" {
 /* Separate RGB and alpha blend equations. */
 #define GL_BLEND_EQUATION_RGB_OES         0x8009
 #define GL_BLEND_EQUATION_ALPHA_OES       0x883D
+typedef void (GL_APIENTRYP PFNGLBLENDEQUATIONSEPARATEOESPROC) (GLenum mode_rgb, GLenum mode_alpha);
+#ifdef GL_GLEXT_PROTOTYPES
+GL_API void GL_APIENTRY glBlendEquationSeparateOES (GLenum mode_rgb, GLenum mode_alpha);
+#endif
 #endif /* GL_OES_blend_equation_separate */
 
 #ifndef GL_OES_blend_func_separate
@@ -37,6 +41,10 @@ extern "C" {
 #define GL_BLEND_SRC_RGB_OES              0x80C9
 #define GL_BLEND_DST_ALPHA_OES            0x80CA
 #define GL_BLEND_SRC_ALPHA_OES            0x80CB
+typedef void (GL_APIENTRYP PFNGLBLENDFUNCSEPARATEOESPROC) (GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha);
+#ifdef GL_GLEXT_PROTOTYPES
+GL_API void GL_APIENTRY glBlendFuncSeparateOES (GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha);
+#endif
 #endif /* GL_OES_blend_func_separate */
 
 #ifndef GL_OES_blend_subtract
@@ -46,6 +54,10 @@ extern "C" {
 #define GL_FUNC_ADD_OES                   0x8006
 #define GL_FUNC_SUBTRACT_OES              0x800A
 #define GL_FUNC_REVERSE_SUBTRACT_OES      0x800B
+typedef void (GL_APIENTRYP PFNGLBLENDEQUATIONOESPROC) (GLenum mode);
+#ifdef GL_GLEXT_PROTOTYPES
+GL_API void GL_APIENTRY glBlendEquationOES (GLenum mode);
+#endif
 #endif /* GL_OES_blend_subtract */
 
 #ifndef GL_OES_compressed_ETC1_RGB8_texture
@@ -154,11 +166,25 @@ GL_API GLboolean GL_APIENTRY glUnmapBufferOES (GLenum target);
 #define GL_WEIGHT_ARRAY_STRIDE_OES        0x86AA
 #define GL_WEIGHT_ARRAY_POINTER_OES       0x86AC
 #define GL_WEIGHT_ARRAY_BUFFER_BINDING_OES 0x889E
+typedef void (GL_APIENTRYP PFNGLCURRENTPALETTEMATRIXOESPROC) (GLuint index);
+typedef void (GL_APIENTRYP PFNGLLOADPALETTEFROMMODELVIEWMATRIXOESPROC) (void);
+typedef void (GL_APIENTRYP PFNGLMATRIXINDEXPOINTEROESPROC) (GLint size, GLenum ty, GLsizei stride, const GLvoid *ptr);
+typedef void (GL_APIENTRYP PFNGLWEIGHTPOINTEROESPROC) (GLint size, GLenum ty, GLsizei stride, const GLvoid *ptr);
+#ifdef GL_GLEXT_PROTOTYPES
+GL_API void GL_APIENTRY glCurrentPaletteMatrixOES (GLuint index);
+GL_API void GL_APIENTRY glLoadPaletteFromModelViewMatrixOES (void);
+GL_API void GL_APIENTRY glMatrixIndexPointerOES (GLint size, GLenum ty, GLsizei stride, const GLvoid *ptr);
+GL_API void GL_APIENTRY glWeightPointerOES (GLint size, GLenum ty, GLsizei stride, const GLvoid *ptr);
+#endif
 #endif /* GL_OES_matrix_palette */
 
 #ifndef GL_OES_query_matrix
 #define GL_OES_query_matrix 1
 /* Reading the current matrix in fixed point with exponents (glQueryMatrixxOES). No tokens. */
+typedef GLbitfield (GL_APIENTRYP PFNGLQUERYMATRIXXOESPROC) (GLfixed *mantissa, GLint *exponent);
+#ifdef GL_GLEXT_PROTOTYPES
+GL_API GLbitfield GL_APIENTRY glQueryMatrixxOES (GLfixed *mantissa, GLint *exponent);
+#endif
 #endif /* GL_OES_query_matrix */
 
 #ifndef GL_OES_stencil_wrap

@@ -70,18 +70,6 @@ impl Scene {
 
     fn draw_call(&self) -> DrawCall<'_> {
         DrawCall {
-            primitive: Primitive::Triangles,
-            indices: Indices::Range {
-                first: 0,
-                count: TRIANGLES * 3,
-            },
-            position: AttribArray {
-                data: &self.positions,
-                ty: ComponentType::Float,
-                size: 3,
-                stride: 12,
-                normalized: false,
-            },
             color: AttribSource::Array(AttribArray {
                 data: &self.colors,
                 ty: ComponentType::Float,
@@ -89,6 +77,20 @@ impl Scene {
                 stride: 16,
                 normalized: false,
             }),
+            ..DrawCall::new(
+                Primitive::Triangles,
+                Indices::Range {
+                    first: 0,
+                    count: TRIANGLES * 3,
+                },
+                AttribArray {
+                    data: &self.positions,
+                    ty: ComponentType::Float,
+                    size: 3,
+                    stride: 12,
+                    normalized: false,
+                },
+            )
         }
     }
 }

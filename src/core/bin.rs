@@ -17,6 +17,9 @@ use super::target::{BandMut, Rect, Target, TargetFormat};
 /// enough that a triangle's setup is shared by many rows.
 pub const BAND_ROWS: u32 = 16;
 
+/// Band commands below which a flush runs on the calling thread alone.
+const SMALL_WORK: usize = 64;
+
 /// Pending primitives beyond which a frame flushes by itself, bounding its memory.
 const MAX_PENDING: usize = 1 << 16;
 
@@ -146,7 +149,14 @@ impl Frame {
             .zip(this.bands.iter().map(Vec::as_slice))
             .filter(|(_, cmds)| !cmds.is_empty())
             .collect();
-        let threads = threads.clamp(1, bands.len().max(1));
+        // Starting a thread costs tens of microseconds: below a few primitives per band it
+        // is not worth it (the result is the same either way).
+        let work: usize = bands.iter().map(|(_, cmds)| cmds.len()).sum();
+        let threads = if work < SMALL_WORK {
+            1
+        } else {
+            threads.clamp(1, bands.len().max(1))
+        };
         if threads == 1 {
             for (band, cmds) in &mut bands {
                 this.replay(band, cmds);

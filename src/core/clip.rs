@@ -2,14 +2,16 @@
 //! zero or negative.
 //!
 //! Lines are clipped against the six frustum planes −w ≤ x, y, z ≤ w and w ≥ [`W_MIN`];
-//! points are kept or dropped whole by their vertex. Triangles are clipped in x and y against
+//! points are kept or dropped whole by their vertex. Every primitive is also clipped against
+//! the enabled user clip planes (ES 1.1 §2.11), whose signed distances the vertex stage
+//! computed in eye space ([`ClipVertex::clip_dist`]): eye coordinates are a linear function
+//! of clip coordinates, so those distances interpolate with the same parameter as every
+//! other attribute and clipping on them is exact. Triangles are clipped in x and y against
 //! a guard band [`GUARD`] times wider than the frustum instead, and the rasterizer limits
 //! their pixels to the viewport rectangle, which selects exactly the pixels frustum clipping
 //! would (pixel centers never lie on the viewport's integer edges). Inside the band a
 //! triangle keeps its own vertices, so the pixels it covers do not depend on the viewport it
 //! happens to cross, and most triangles near the edges are not clipped at all.
-
-use glam::Vec4;
 
 use super::vertex::ClipVertex;
 
@@ -22,14 +24,23 @@ pub const W_MIN: f32 = 1e-30;
 /// snapped coordinates below 2²⁴ and edge products far below 2⁶³.
 pub const GUARD: f32 = 8.0;
 
-/// Each plane adds at most one vertex: 3 + 7.
-const MAX_POLY: usize = 10;
+/// `GL_MAX_CLIP_PLANES`: the user clip planes a vertex carries distances for.
+pub const MAX_USER_PLANES: usize = 6;
 
-/// The signed distances of a clip-space position to each clip plane, x and y widened by
-/// `band`; negative is outside.
+/// Frustum planes (6) and the w plane.
+const FRUSTUM_PLANES: usize = 7;
+const PLANES: usize = FRUSTUM_PLANES + MAX_USER_PLANES;
+
+/// Each plane adds at most one vertex.
+const MAX_POLY: usize = 3 + PLANES;
+
+/// The signed distances of a vertex to each clip plane, x and y widened by `band`, then
+/// the user planes (the first `user` of them; the rest read 0, inside); negative is outside.
 #[inline]
-fn distances_with(p: Vec4, band: f32) -> [f32; 7] {
-    [
+fn distances_with(v: &ClipVertex, band: f32) -> [f32; PLANES] {
+    let p = v.pos;
+    let mut d = [0.0; PLANES];
+    d[..FRUSTUM_PLANES].copy_from_slice(&[
         band * p.w + p.x,
         band * p.w - p.x,
         band * p.w + p.y,
@@ -37,27 +48,52 @@ fn distances_with(p: Vec4, band: f32) -> [f32; 7] {
         p.w + p.z,
         p.w - p.z,
         p.w - W_MIN,
-    ]
+    ]);
+    d[FRUSTUM_PLANES..].copy_from_slice(&v.clip_dist);
+    d
 }
 
-/// Distances to the frustum planes.
+/// Distances to the frustum planes and the user planes.
 #[inline]
-fn distances(p: Vec4) -> [f32; 7] {
-    distances_with(p, 1.0)
+fn distances(v: &ClipVertex) -> [f32; PLANES] {
+    distances_with(v, 1.0)
 }
 
-/// Distances to the guard band's planes (x, y) and the frustum's (z, w).
+/// Distances to the guard band's planes (x, y), the frustum's (z, w) and the user planes.
 #[inline]
-fn guard_distances(p: Vec4) -> [f32; 7] {
-    distances_with(p, GUARD)
+fn guard_distances(v: &ClipVertex) -> [f32; PLANES] {
+    distances_with(v, GUARD)
 }
 
-/// A bit per plane (of the guard band) that the position is outside of.
+/// The distance to plane `plane` of [`guard_distances`].
 #[inline]
-pub fn outcode(p: Vec4) -> u8 {
-    let d = guard_distances(p);
+fn guard_distance(v: &ClipVertex, plane: usize) -> f32 {
+    let p = v.pos;
+    match plane {
+        0 => GUARD * p.w + p.x,
+        1 => GUARD * p.w - p.x,
+        2 => GUARD * p.w + p.y,
+        3 => GUARD * p.w - p.y,
+        4 => p.w + p.z,
+        5 => p.w - p.z,
+        6 => p.w - W_MIN,
+        k => v.clip_dist[k - FRUSTUM_PLANES],
+    }
+}
+
+/// The planes that apply: the frustum's and the first `user` user planes.
+#[inline]
+fn plane_count(user: usize) -> usize {
+    FRUSTUM_PLANES + user.min(MAX_USER_PLANES)
+}
+
+/// A bit per plane (of the guard band, then the first `user` user planes) that the vertex
+/// is outside of.
+#[inline]
+pub fn outcode(v: &ClipVertex, user: usize) -> u16 {
+    let d = guard_distances(v);
     let mut code = 0;
-    for (i, &v) in d.iter().enumerate() {
+    for (i, &v) in d[..plane_count(user)].iter().enumerate() {
         // NaN compares false, so it counts as outside too.
         if v.is_nan() || v < 0.0 {
             code |= 1 << i;
@@ -66,16 +102,19 @@ pub fn outcode(p: Vec4) -> u8 {
     code
 }
 
-/// Clips segment (a, b) against the clip volume, returning what is left, in the original
-/// direction.
-pub fn line(a: &ClipVertex, b: &ClipVertex) -> Option<(ClipVertex, ClipVertex)> {
+/// Clips segment (a, b) against the clip volume and the first `user` user planes,
+/// returning what is left, in the original direction.
+pub fn line(a: &ClipVertex, b: &ClipVertex, user: usize) -> Option<(ClipVertex, ClipVertex)> {
     if !(a.pos.is_finite() && b.pos.is_finite()) {
         return None;
     }
-    let (da, db) = (distances(a.pos), distances(b.pos));
+    let n = plane_count(user);
+    let (da, db) = (distances(a), distances(b));
+    let (da, db) = (&da[..n], &db[..n]);
     let (mut t0, mut t1) = (0f32, 1f32);
-    for (&pa, &pb) in da.iter().zip(&db) {
-        if pa < 0.0 && pb < 0.0 {
+    for (&pa, &pb) in da.iter().zip(db) {
+        // NaN distances (a user plane meeting an infinite eye position) count as outside.
+        if pa.is_nan() || pb.is_nan() || (pa < 0.0 && pb < 0.0) {
             return None;
         }
         if pa < 0.0 {
@@ -92,21 +131,29 @@ pub fn line(a: &ClipVertex, b: &ClipVertex) -> Option<(ClipVertex, ClipVertex)> 
     Some((start, end))
 }
 
-/// True when a point survives clipping: its vertex lies inside the clip volume. (A wide
-/// point whose center is inside is drawn whole; one whose center is outside is not drawn.)
-pub fn point(v: &ClipVertex) -> bool {
-    v.pos.is_finite() && distances(v.pos).iter().all(|&d| d >= 0.0)
+/// True when a point survives clipping: its vertex lies inside the clip volume and the first
+/// `user` user planes. (A wide point whose center is inside is drawn whole; one whose center
+/// is outside is not drawn.)
+pub fn point(v: &ClipVertex, user: usize) -> bool {
+    v.pos.is_finite() && distances(v)[..plane_count(user)].iter().all(|&d| d >= 0.0)
 }
 
-/// Clips triangle (a, b, c) and calls `emit` with the resulting convex polygon (at least three
+/// Clips triangle (a, b, c) against the guard band, the near, far and w planes and the first
+/// `user` user planes, and calls `emit` with the resulting convex polygon (at least three
 /// vertices, in the original winding), or not at all when nothing is left.
-pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnce(&[ClipVertex])) {
+pub fn triangle(
+    a: &ClipVertex,
+    b: &ClipVertex,
+    c: &ClipVertex,
+    user: usize,
+    emit: impl FnOnce(&[ClipVertex]),
+) {
     // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
     // than let NaN reach the rasterizer.
     if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
         return;
     }
-    let codes = [outcode(a.pos), outcode(b.pos), outcode(c.pos)];
+    let codes = [outcode(a, user), outcode(b, user), outcode(c, user)];
     if codes[0] | codes[1] | codes[2] == 0 {
         emit(&[*a, *b, *c]);
         return;
@@ -120,14 +167,14 @@ pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnc
     let mut n = 3;
     let mut next = [*a; MAX_POLY];
     let all = codes[0] | codes[1] | codes[2];
-    for plane in 0..7 {
+    for plane in 0..plane_count(user) {
         if all & (1 << plane) == 0 {
             continue;
         }
         let mut m = 0;
         for i in 0..n {
             let (p, q) = (&poly[i], &poly[(i + 1) % n]);
-            let (dp, dq) = (guard_distances(p.pos)[plane], guard_distances(q.pos)[plane]);
+            let (dp, dq) = (guard_distance(p, plane), guard_distance(q, plane));
             if dp >= 0.0 {
                 next[m] = *p;
                 m += 1;
@@ -161,12 +208,10 @@ pub fn triangle(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, emit: impl FnOnc
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::Vec4;
 
     fn v(x: f32, y: f32, z: f32, w: f32) -> ClipVertex {
-        ClipVertex {
-            pos: Vec4::new(x, y, z, w),
-            color: Vec4::ONE,
-        }
+        ClipVertex::new(Vec4::new(x, y, z, w), Vec4::ONE)
     }
 
     #[test]
@@ -176,6 +221,7 @@ mod tests {
             &v(0., 0., 0., 1.),
             &v(0.5, 0., 0., 1.),
             &v(0., 0.5, 0., 1.),
+            0,
             |p| got = p.len(),
         );
         assert_eq!(got, 3);
@@ -184,6 +230,7 @@ mod tests {
             &v(20., 0., 0., 1.),
             &v(30., 0., 0., 1.),
             &v(20., 1., 0., 1.),
+            0,
             |_| called = true,
         );
         assert!(!called, "beyond the guard band");
@@ -191,6 +238,7 @@ mod tests {
             &v(2., 0., 0., 1.),
             &v(3., 0., 0., 1.),
             &v(2., 1., 0., 1.),
+            0,
             |p| got = p.len(),
         );
         assert_eq!(
@@ -206,6 +254,7 @@ mod tests {
             &v(0., 0., 0., 1.),
             &v(0., 0., 0., -1.),
             &v(0.5, 0.5, 0., 1.),
+            0,
             |p| out = p.to_vec(),
         );
         assert!(out.len() >= 3);
@@ -223,6 +272,7 @@ mod tests {
             &v(-10., -10., 0., 1.),
             &v(30., -10., 0., 1.),
             &v(-10., 30., 0., 1.),
+            0,
             |p| n = p.len(),
         );
         assert_eq!(n, 4, "clipped to the guard band's square");
@@ -230,6 +280,7 @@ mod tests {
             &v(-100., -10., -5., 1.),
             &v(100., -10., 5., 1.),
             &v(0., 100., 0.5, 1.),
+            0,
             |p| n = p.len(),
         );
         assert!((3..=MAX_POLY).contains(&n));

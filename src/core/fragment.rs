@@ -13,13 +13,18 @@
 //! `GL_SAMPLE_ALPHA_TO_ONE`) are skipped: every config has `EGL_SAMPLE_BUFFERS` 0, and the
 //! specification skips them then (ES 1.1 §4.1.3).
 
+use std::sync::Arc;
+
 use super::raster::Span;
-use super::setup::Shading;
+use super::setup::{Shading, TexPlanes};
 use super::state::{
     AlphaTest, Blend, BlendEquation, BlendFactor, CompareFunc, LogicOp, Quality, RenderState,
     StencilOp, StencilTest,
 };
 use super::target::{expand_to_8, keep_mask, BandMut, ColorFormat, DepthFormat, TargetFormat};
+use super::texenv::{self, Fog, TextureUnit};
+use super::texture::{MagFilter, MinFilter, Sampler};
+use super::TEXTURE_UNITS;
 
 /// Which span routine a key runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -33,11 +38,240 @@ enum Route {
         smooth: bool,
         blend: bool,
     },
+    /// `textured<FILTER, DEPTH, BLEND>`: at most one texture unit (any environment) and
+    /// fog, no alpha test, stencil, logic op or dither. `FILTER` is one of the `F_*`
+    /// constants.
+    Textured {
+        filter: u8,
+        depth: bool,
+        blend: bool,
+    },
     General,
 }
 
+/// Texture filters the textured span routine is specialized on.
+const F_NONE: u8 = 0;
+/// NEAREST for both minification and magnification: level 0, no level of detail. On
+/// affine spans (q/w constant) texture coordinates step without a divide.
+const F_NEAREST: u8 = 1;
+/// LINEAR for both: bilinear on level 0, no level of detail.
+const F_BILINEAR: u8 = 2;
+/// LINEAR_MIPMAP_LINEAR with LINEAR magnification.
+const F_TRILINEAR: u8 = 3;
+/// Any other filter pair, through [`Sampler::sample_255`].
+const F_GENERAL: u8 = 4;
+
+/// Texturing and fog for a draw call: the enabled units (index and state) in order, fog,
+/// and where the level of detail is computed.
+#[derive(Debug, PartialEq)]
+pub struct TexStage {
+    units: Vec<(usize, TextureUnit)>,
+    fog: Option<Fog>,
+    /// Level of detail per pixel (PERSPECTIVE_CORRECTION_HINT NICEST or DONT_CARE), else
+    /// exact every [`PERSPECTIVE_STEP`] pixels and linear in between (FASTEST).
+    lod_per_pixel: bool,
+}
+
+impl TexStage {
+    fn new(state: &RenderState) -> Option<TexStage> {
+        let units: Vec<(usize, TextureUnit)> = state
+            .textures
+            .iter()
+            .enumerate()
+            .filter_map(|(i, u)| u.clone().map(|u| (i, u)))
+            .collect();
+        if units.is_empty() && state.fog.is_none() {
+            return None;
+        }
+        Some(TexStage {
+            units,
+            fog: state.fog,
+            lod_per_pixel: state.perspective != Quality::Fastest,
+        })
+    }
+
+    /// The specialized filter for a single unit, or for none.
+    fn filter(&self) -> u8 {
+        let Some((_, u)) = self.units.first() else {
+            return F_NONE;
+        };
+        let sm = &u.sampler;
+        match (sm.min, sm.mag) {
+            (MinFilter::Nearest, MagFilter::Nearest) => F_NEAREST,
+            (MinFilter::Linear, MagFilter::Linear) => F_BILINEAR,
+            (MinFilter::LinearMipmapLinear, MagFilter::Linear) => F_TRILINEAR,
+            _ => F_GENERAL,
+        }
+    }
+}
+
+/// One unit's texture coordinates along a span: s/w, t/w, q/w at the first pixel and their
+/// steps per pixel in x (and per row in y, for the level of detail). Affine spans (q/w the
+/// same everywhere) are divided once, here.
+#[derive(Clone, Copy, Debug, Default)]
+struct TexSpan {
+    s0: f32,
+    t0: f32,
+    q0: f32,
+    ds: f32,
+    dt: f32,
+    dq: f32,
+    sy: f32,
+    ty: f32,
+    qy: f32,
+    w: f32,
+    h: f32,
+    affine: bool,
+}
+
+impl TexSpan {
+    #[inline]
+    fn new(p: &TexPlanes, px: i32, py: i32, (w, h): (u32, u32)) -> TexSpan {
+        let q0 = p.q.at(px, py);
+        let affine = p.q.dx == 0.0 && p.q.dy == 0.0 && q0 != 0.0;
+        let k = if affine { 1.0 / q0 } else { 1.0 };
+        TexSpan {
+            s0: (p.s.at(px, py) * k) as f32,
+            t0: (p.t.at(px, py) * k) as f32,
+            q0: (q0 * k) as f32,
+            ds: (p.s.dx * k) as f32,
+            dt: (p.t.dx * k) as f32,
+            dq: (p.q.dx * k) as f32,
+            sy: (p.s.dy * k) as f32,
+            ty: (p.t.dy * k) as f32,
+            qy: (p.q.dy * k) as f32,
+            w: w as f32,
+            h: h as f32,
+            affine,
+        }
+    }
+
+    /// (s, t) at pixel `i` of the span.
+    #[inline(always)]
+    fn st(&self, i: usize) -> (f32, f32) {
+        let fi = i as f32;
+        let (s, t) = (self.s0 + self.ds * fi, self.t0 + self.dt * fi);
+        if self.affine {
+            (s, t)
+        } else {
+            let r = 1.0 / (self.q0 + self.dq * fi);
+            (s * r, t * r)
+        }
+    }
+
+    /// λ at pixel `i` where the coordinates are (s, t): ρ from the exact derivatives of
+    /// the quotients (d(a/q) = (da − (a/q)·dq)/q).
+    #[inline(always)]
+    fn lambda(&self, i: usize, s: f32, t: f32) -> f32 {
+        let r = if self.affine {
+            1.0
+        } else {
+            1.0 / (self.q0 + self.dq * i as f32)
+        };
+        let ux = (self.ds - s * self.dq) * r * self.w;
+        let vx = (self.dt - t * self.dq) * r * self.h;
+        let uy = (self.sy - s * self.qy) * r * self.w;
+        let vy = (self.ty - t * self.qy) * r * self.h;
+        Sampler::lambda((ux * ux + vx * vx).max(uy * uy + vy * vy))
+    }
+}
+
+/// Texturing and fog along one span.
+struct SpanTex<'a> {
+    stage: &'a TexStage,
+    spans: [TexSpan; TEXTURE_UNITS],
+    /// Per unit, when λ is not computed per pixel: the first pixel of the run of
+    /// [`PERSPECTIVE_STEP`] pixels set up last, λ there and its linear step per pixel (from
+    /// the exact λ at both ends of the run).
+    lambda: [(usize, f32, f32); TEXTURE_UNITS],
+    len: usize,
+    fog0: f32,
+    dfog: f32,
+    inv_w0: f32,
+    d_inv_w: f32,
+}
+
+impl<'a> SpanTex<'a> {
+    #[inline]
+    fn new(stage: &'a TexStage, t: &Shading, span: Span) -> SpanTex<'a> {
+        let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
+        let mut spans = [TexSpan::default(); TEXTURE_UNITS];
+        if let Some(planes) = t.tex.as_deref() {
+            for (n, (u, unit)) in stage.units.iter().enumerate() {
+                spans[n] = TexSpan::new(&planes[*u], px, py, unit.sampler.size());
+            }
+        }
+        SpanTex {
+            stage,
+            spans,
+            lambda: [(usize::MAX, 0.0, 0.0); TEXTURE_UNITS],
+            len: (span.x1 - span.x0).max(1) as usize,
+            fog0: t.fog.at(px, py) as f32,
+            dfog: t.fog.dx as f32,
+            inv_w0: t.inv_w.at(px, py) as f32,
+            d_inv_w: t.inv_w.dx as f32,
+        }
+    }
+
+    #[inline(always)]
+    fn lambda_at(&mut self, n: usize, i: usize, s: f32, t: f32) -> f32 {
+        if self.stage.lod_per_pixel {
+            return self.spans[n].lambda(i, s, t);
+        }
+        let start = i - i % PERSPECTIVE_STEP;
+        if self.lambda[n].0 != start {
+            let ts = &self.spans[n];
+            let exact = |j: usize| {
+                let (s, t) = ts.st(j);
+                ts.lambda(j, s, t)
+            };
+            let end = (start + PERSPECTIVE_STEP).min(self.len - 1);
+            let l0 = exact(start);
+            let step = if end > start {
+                (exact(end) - l0) / (end - start) as f32
+            } else {
+                0.0
+            };
+            // An infinite end (ρ = 0) leaves λ constant over the run.
+            self.lambda[n] = (start, l0, if step.is_finite() { step } else { 0.0 });
+        }
+        self.lambda[n].1 + self.lambda[n].2 * (i - start) as f32
+    }
+
+    /// Fog on `c` at pixel `i`.
+    #[inline(always)]
+    fn fog(&self, i: usize, c: &mut [f32; 4]) {
+        if let Some(f) = &self.stage.fog {
+            let fi = i as f32;
+            let v = (self.fog0 + self.dfog * fi) / (self.inv_w0 + self.d_inv_w * fi);
+            let factor = if f.per_pixel() {
+                f.factor(v)
+            } else {
+                v.clamp(0.0, 1.0)
+            };
+            f.apply(factor, c);
+        }
+    }
+
+    /// Every enabled unit in order, then fog: the textured color at pixel `i` of a
+    /// fragment whose primary color is `primary`.
+    #[inline]
+    fn apply(&mut self, i: usize, primary: [f32; 4]) -> [f32; 4] {
+        let mut c = primary;
+        let stage = self.stage;
+        for (n, (_, unit)) in stage.units.iter().enumerate() {
+            let (s, t) = self.spans[n].st(i);
+            let lambda = self.lambda_at(n, i, s, t);
+            let texel = unit.sampler.sample(s, t, lambda);
+            c = texenv::apply(&unit.env, unit.sampler.format, texel, c, primary);
+        }
+        self.fog(i, &mut c);
+        c
+    }
+}
+
 /// What the fragment stage does for the current state, decided once per draw call.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct FragmentKey {
     color: ColorFormat,
     /// Stored bits the color mask protects; all ones means color is not written.
@@ -55,6 +289,8 @@ pub struct FragmentKey {
     dither: bool,
     flat: bool,
     perspective: Quality,
+    /// Texturing and fog, when either is on.
+    tex: Option<Arc<TexStage>>,
     route: Route,
 }
 
@@ -83,22 +319,33 @@ impl FragmentKey {
             dither,
             flat: state.shade_model == super::state::ShadeModel::Flat,
             perspective: state.perspective,
+            tex: TexStage::new(state).map(Arc::new),
             route: Route::General,
         };
         key.route = if key.stencil.is_none() && keep == u32::MAX && !key.depth_write {
             Route::Nothing
-        } else if key.alpha.is_none()
-            && key.stencil.is_none()
-            && key.logic_op.is_none()
-            && !key.dither
+        } else if key.alpha.is_some()
+            || key.stencil.is_some()
+            || key.logic_op.is_some()
+            || key.dither
         {
+            Route::General
+        } else if let Some(stage) = &key.tex {
+            if stage.units.len() <= 1 {
+                Route::Textured {
+                    filter: stage.filter(),
+                    depth: key.depth.is_some(),
+                    blend: key.blend.is_some(),
+                }
+            } else {
+                Route::General
+            }
+        } else {
             Route::Simple {
                 depth: key.depth.is_some(),
                 smooth: !key.flat,
                 blend: key.blend.is_some(),
             }
-        } else {
-            Route::General
         };
         key
     }
@@ -124,6 +371,29 @@ impl FragmentKey {
                 (true, true, false) => simple::<true, true, false>(self, t, span, band),
                 (true, true, true) => simple::<true, true, true>(self, t, span, band),
             },
+            Route::Textured {
+                filter,
+                depth,
+                blend,
+            } => {
+                macro_rules! by_filter {
+                    ($d:literal, $b:literal) => {
+                        match filter {
+                            F_NONE => textured::<F_NONE, $d, $b>(self, t, span, band),
+                            F_NEAREST => textured::<F_NEAREST, $d, $b>(self, t, span, band),
+                            F_BILINEAR => textured::<F_BILINEAR, $d, $b>(self, t, span, band),
+                            F_TRILINEAR => textured::<F_TRILINEAR, $d, $b>(self, t, span, band),
+                            _ => textured::<F_GENERAL, $d, $b>(self, t, span, band),
+                        }
+                    };
+                }
+                match (depth, blend) {
+                    (false, false) => by_filter!(false, false),
+                    (false, true) => by_filter!(false, true),
+                    (true, false) => by_filter!(true, false),
+                    (true, true) => by_filter!(true, true),
+                }
+            }
             Route::General => general(self, t, span, band),
         }
     }
@@ -207,7 +477,7 @@ impl SpanInterp {
     }
 
     /// The color at pixel `i` of the span.
-    #[inline]
+    #[inline(always)]
     fn color(&mut self, i: usize) -> [f32; 4] {
         match self.divide {
             Divide::None => {
@@ -274,9 +544,74 @@ fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     }
 }
 
+/// The span routine for keys with at most one texture unit and no alpha test, stencil,
+/// logic op or dither. The depth test runs before texturing, which gives the same result
+/// (ES 1.1 §3.7: nothing between them can discard a fragment here) and skips the
+/// sampling of hidden fragments.
+fn textured<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
+    k: &FragmentKey,
+    t: &Shading,
+    span: Span,
+    band: &mut BandMut<'_>,
+) {
+    let stage = k.tex.as_deref().expect("textured routes have a stage");
+    let mut interp = SpanInterp::new(t, span, k.perspective);
+    let mut tex = SpanTex::new(stage, t, span);
+    let row = (span.y - band.y0) as usize * band.width;
+    let write_color = k.keep != u32::MAX;
+    let unit = stage.units.first().map(|(_, u)| u);
+    let ts = tex.spans[0];
+    // Without planes (cannot happen for primitives set up with this state) texturing is off.
+    let textured = FILTER != F_NONE && t.tex.is_some();
+    for (i, x) in (span.x0..span.x1).enumerate() {
+        let at = row + x as usize;
+        if DEPTH {
+            let (func, df) = k.depth.expect("DEPTH routes have a depth test");
+            let z = df.quantize(interp.z(i));
+            if !func.test(z, band.depth[at]) {
+                continue;
+            }
+            if k.depth_write {
+                band.depth[at] = z;
+            }
+        }
+        if !write_color {
+            continue;
+        }
+        let mut c = match t.flat {
+            Some(c) => c,
+            None => interp.color(i),
+        };
+        if textured {
+            let u = unit.expect("a filter implies a unit");
+            let sm = &u.sampler;
+            let (s, tt) = ts.st(i);
+            let texel = match FILTER {
+                F_NEAREST => sm.nearest(0, s, tt),
+                F_BILINEAR => sm.bilinear(0, s, tt),
+                F_TRILINEAR => sm.trilinear(s, tt, tex.lambda_at(0, i, s, tt)),
+                _ => sm.sample_255(s, tt, tex.lambda_at(0, i, s, tt)),
+            };
+            const INV_255: f32 = 1.0 / 255.0;
+            let texel = texel.map(|v| v * INV_255);
+            c = texenv::apply(&u.env, sm.format, texel, c, c);
+        }
+        tex.fog(i, &mut c);
+        let dst = band.color[at];
+        let word = if BLEND {
+            let b = k.blend.expect("BLEND routes blend");
+            k.color.encode(blend(&b, c, decode(k.color, dst)))
+        } else {
+            k.color.encode(c)
+        };
+        band.color[at] = (dst & k.keep) | (word & !k.keep);
+    }
+}
+
 /// The routine for every key: each enabled operation, per pixel, in the specification's order.
 fn general(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
     let mut interp = SpanInterp::new(t, span, k.perspective);
+    let mut tex = k.tex.as_deref().map(|stage| SpanTex::new(stage, t, span));
     let row = (span.y - band.y0) as usize * band.width;
     for (i, x) in (span.x0..span.x1).enumerate() {
         let at = row + x as usize;
@@ -291,7 +626,12 @@ fn general(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
             if share == 0.0 {
                 continue;
             }
+            if let Some(tex) = &mut tex {
+                src = tex.apply(i, src);
+            }
             src[3] *= share;
+        } else if let Some(tex) = &mut tex {
+            src = tex.apply(i, src);
         }
         if let Some(a) = k.alpha {
             // Both sides at 8-bit precision, so a reference equal to a vertex alpha compares
@@ -369,54 +709,80 @@ fn stencil_write(op: StencilOp, stored: u8, reference: u8, writemask: u8) -> u8 
 
 /// The stored color as values in [0, 1]: each channel's n-bit value over 2ⁿ − 1, exactly
 /// (not the replicated 8-bit byte over 255); 1 for a missing alpha.
+#[inline(always)]
 fn decode(format: ColorFormat, word: u32) -> [f32; 4] {
-    let bits = format.bits();
+    const INV_255: f32 = 1.0 / 255.0;
     let bytes = word.to_le_bytes();
-    std::array::from_fn(|c| match bits[c] {
-        0 => 1.0,
-        n => (bytes[c] >> (8 - n)) as f32 / ((1u32 << n) - 1) as f32,
-    })
-}
-
-fn factor(f: BlendFactor, src: &[f32; 4], dst: &[f32; 4], c: usize) -> f32 {
-    match f {
-        BlendFactor::Zero => 0.0,
-        BlendFactor::One => 1.0,
-        BlendFactor::SrcColor => src[c],
-        BlendFactor::OneMinusSrcColor => 1.0 - src[c],
-        BlendFactor::DstColor => dst[c],
-        BlendFactor::OneMinusDstColor => 1.0 - dst[c],
-        BlendFactor::SrcAlpha => src[3],
-        BlendFactor::OneMinusSrcAlpha => 1.0 - src[3],
-        BlendFactor::DstAlpha => dst[3],
-        BlendFactor::OneMinusDstAlpha => 1.0 - dst[3],
-        BlendFactor::SrcAlphaSaturate => {
-            if c == 3 {
-                1.0
-            } else {
-                src[3].min(1.0 - dst[3])
-            }
+    match format {
+        // Every 8-bit byte is its own value; a missing alpha is stored as 255.
+        ColorFormat::Rgba8888 | ColorFormat::Rgb888 => bytes.map(|b| b as f32 * INV_255),
+        ColorFormat::Rgb565 => {
+            let bits = format.bits();
+            std::array::from_fn(|c| match bits[c] {
+                0 => 1.0,
+                n => (bytes[c] >> (8 - n)) as f32 / ((1u32 << n) - 1) as f32,
+            })
         }
     }
 }
 
+/// A blend factor for all four channels at once (one decision per pixel, not per channel).
+/// The alpha lane of `SRC_ALPHA_SATURATE` is 1.
+#[inline(always)]
+fn factors(f: BlendFactor, src: &[f32; 4], dst: &[f32; 4]) -> [f32; 4] {
+    match f {
+        BlendFactor::Zero => [0.0; 4],
+        BlendFactor::One => [1.0; 4],
+        BlendFactor::SrcColor => *src,
+        BlendFactor::OneMinusSrcColor => src.map(|c| 1.0 - c),
+        BlendFactor::DstColor => *dst,
+        BlendFactor::OneMinusDstColor => dst.map(|c| 1.0 - c),
+        BlendFactor::SrcAlpha => [src[3]; 4],
+        BlendFactor::OneMinusSrcAlpha => [1.0 - src[3]; 4],
+        BlendFactor::DstAlpha => [dst[3]; 4],
+        BlendFactor::OneMinusDstAlpha => [1.0 - dst[3]; 4],
+        BlendFactor::SrcAlphaSaturate => {
+            let f = src[3].min(1.0 - dst[3]);
+            [f, f, f, 1.0]
+        }
+    }
+}
+
+#[inline]
+fn combine(eq: BlendEquation, s: f32, d: f32) -> f32 {
+    match eq {
+        BlendEquation::Add => s + d,
+        BlendEquation::Subtract => s - d,
+        BlendEquation::ReverseSubtract => d - s,
+    }
+}
+
 /// Blends `src` (clamped to [0, 1] first) over `dst`; the result is clamped by the encoder.
+#[inline(always)]
 fn blend(b: &Blend, src: [f32; 4], dst: [f32; 4]) -> [f32; 4] {
     let src = src.map(|c| c.clamp(0.0, 1.0));
-    std::array::from_fn(|c| {
-        let (sf, df, eq) = if c < 3 {
-            (b.src_rgb, b.dst_rgb, b.eq_rgb)
-        } else {
-            (b.src_alpha, b.dst_alpha, b.eq_alpha)
-        };
-        let s = src[c] * factor(sf, &src, &dst, c);
-        let d = dst[c] * factor(df, &src, &dst, c);
-        match eq {
-            BlendEquation::Add => s + d,
-            BlendEquation::Subtract => s - d,
-            BlendEquation::ReverseSubtract => d - s,
+    let sf = factors(b.src_rgb, &src, &dst);
+    let df = factors(b.dst_rgb, &src, &dst);
+    let mut out = [0.0; 4];
+    if b.eq_rgb == BlendEquation::Add {
+        for c in 0..3 {
+            out[c] = src[c] * sf[c] + dst[c] * df[c];
         }
-    })
+    } else {
+        for c in 0..3 {
+            out[c] = combine(b.eq_rgb, src[c] * sf[c], dst[c] * df[c]);
+        }
+    }
+    let (sa, da) = if (b.src_alpha, b.dst_alpha) == (b.src_rgb, b.dst_rgb) {
+        (sf[3], df[3])
+    } else {
+        (
+            factors(b.src_alpha, &src, &dst)[3],
+            factors(b.dst_alpha, &src, &dst)[3],
+        )
+    };
+    out[3] = combine(b.eq_alpha, src[3] * sa, dst[3] * da);
+    out
 }
 
 /// A 4×4 ordered-dither threshold for pixel (x, y), in (0, 1).

@@ -5,7 +5,7 @@ use super::clip;
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
 use super::target::{DepthFormat, Rect};
 use super::vertex::ClipVertex;
-use super::SUBPIXEL_BITS;
+use super::{SUBPIXEL_BITS, TEXTURE_UNITS};
 
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 const HALF: i64 = ONE / 2;
@@ -89,6 +89,97 @@ pub struct Shading {
     /// The color when it does not vary: flat shading, points.
     pub flat: Option<[f32; 4]>,
     pub coverage: Option<Coverage>,
+    /// Texture coordinates of the enabled units (`None` when texturing is off).
+    pub tex: Option<UnitPlanes>,
+    /// With fog: the fog distance |z_eye| (per-pixel fog) or the fog factor (per-vertex
+    /// fog), divided by w.
+    pub fog: Plane,
+}
+
+/// The texture coordinate planes of every unit of a primitive (boxed: most primitives
+/// have none).
+pub type UnitPlanes = Box<[TexPlanes; TEXTURE_UNITS]>;
+
+/// One texture unit's coordinates across a primitive: s, t, r and q each divided by w, so
+/// the texture coordinates at a pixel are (s/w)/(q/w) and (t/w)/(q/w), perspective-correct
+/// without a separate 1/w. Under REPEAT (and MIRRORED_REPEAT) whole periods are removed
+/// from s and t at setup, so coordinates of magnitude 2¹⁰ and beyond keep their fraction's
+/// precision.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TexPlanes {
+    pub s: Plane,
+    pub t: Plane,
+    pub r: Plane,
+    pub q: Plane,
+}
+
+/// The whole wrap periods to remove from coordinate `c` (s or t) of the vertices of a
+/// primitive (`q` their q): a multiple of `period` near the coordinates' mean.
+fn period_offset(c: &[f64], q: &[f64], period: Option<f64>) -> f64 {
+    let Some(p) = period else {
+        return 0.0;
+    };
+    let (mut sum, mut n) = (0.0, 0);
+    for (&c, &q) in c.iter().zip(q) {
+        let v = c / q;
+        if q.abs() > 1e-6 && v.is_finite() {
+            sum += v;
+            n += 1;
+        }
+    }
+    if n == 0 {
+        return 0.0;
+    }
+    let off = (sum / n as f64 / p).floor() * p;
+    if off.is_finite() {
+        off
+    } else {
+        0.0
+    }
+}
+
+/// Builds the plane through per-vertex values given by a function of the vertex index.
+pub(crate) type PlaneBuilder<'a> = &'a dyn Fn(&dyn Fn(usize) -> f64) -> Plane;
+
+/// The texture and fog planes of a primitive with vertices `v` (and 1/w `inv_w`):
+/// `plane(f)` builds the plane through the per-vertex values `f(i)`, i indexing `v`.
+pub(crate) fn attribute_planes(
+    state: &RenderState,
+    v: &[&ClipVertex],
+    inv_w: &[f64],
+    plane: PlaneBuilder<'_>,
+) -> (Option<UnitPlanes>, Plane) {
+    let fog = match &state.fog {
+        Some(f) => {
+            let per_pixel = f.per_pixel();
+            plane(&|i| {
+                let z = v[i].eye.z.abs();
+                let value = if per_pixel { z } else { f.factor(z) };
+                value as f64 * inv_w[i]
+            })
+        }
+        None => Plane::default(),
+    };
+    if state.textures.iter().all(Option::is_none) {
+        return (None, fog);
+    }
+    let mut planes = Box::new([TexPlanes::default(); TEXTURE_UNITS]);
+    for (u, unit) in state.textures.iter().enumerate() {
+        let Some(unit) = unit else { continue };
+        let n = v.len();
+        let q: Vec<f64> = (0..n).map(|i| v[i].tex[u].w as f64).collect();
+        let s: Vec<f64> = (0..n).map(|i| v[i].tex[u].x as f64).collect();
+        let t: Vec<f64> = (0..n).map(|i| v[i].tex[u].y as f64).collect();
+        let os = period_offset(&s, &q, unit.sampler.wrap_s.period());
+        let ot = period_offset(&t, &q, unit.sampler.wrap_t.period());
+        planes[u] = TexPlanes {
+            s: plane(&|i| (s[i] - os * q[i]) * inv_w[i]),
+            t: plane(&|i| (t[i] - ot * q[i]) * inv_w[i]),
+            r: plane(&|i| v[i].tex[u].z as f64 * inv_w[i]),
+            q: plane(&|i| q[i] * inv_w[i]),
+        };
+    }
+    (Some(planes), fog)
 }
 
 /// Antialiasing coverage: the share of a pixel's square inside the primitive, estimated
@@ -247,14 +338,18 @@ pub fn triangle(
         let slope = z_plane.dx.abs().max(z_plane.dy.abs());
         z_plane.c += o.factor as f64 * slope + o.units as f64 / df.max() as f64;
     }
-    let flat = (state.shade_model == ShadeModel::Flat).then(|| provoking.color.to_array());
+    // Back-facing triangles take the back colors (two-sided lighting; equal to the front
+    // colors otherwise).
+    let color = |v: &ClipVertex| if front { v.color } else { v.back_color };
+    let flat = (state.shade_model == ShadeModel::Flat).then(|| color(provoking).to_array());
     let color_w = std::array::from_fn(|c| {
         if flat.is_some() {
             Plane::default()
         } else {
-            plane(&|i| v[i].color[c] as f64 * inv_w[i])
+            plane(&|i| color(v[i])[c] as f64 * inv_w[i])
         }
     });
+    let (tex, fog) = attribute_planes(state, &v, &inv_w, &|f| plane(&|i| f(i)));
     Some(Triangle {
         edges,
         bbox,
@@ -265,6 +360,8 @@ pub fn triangle(
             color_w,
             flat,
             coverage: None,
+            tex,
+            fog,
         },
     })
 }

@@ -2,7 +2,7 @@
 //! specification's float form (ARCHITECTURE decision 1). The GL context and the M3G renderer
 //! both fill one in; the pipeline never sees where it came from.
 
-use glam::Mat4;
+use glam::{Mat4, Vec3, Vec4};
 
 use super::target::{ColorMask, Rect};
 
@@ -224,6 +224,127 @@ pub struct Viewport {
     pub height: i32,
 }
 
+/// One enabled light (ES 1.1 §2.12.1), positions and directions in eye coordinates (the GL
+/// transforms them by the modelview current when they are set).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    pub ambient: Vec4,
+    pub diffuse: Vec4,
+    pub specular: Vec4,
+    /// w = 0: a directional light shining from direction (x, y, z).
+    pub position: Vec4,
+    pub spot_direction: Vec3,
+    /// [0, 128].
+    pub spot_exponent: f32,
+    /// Degrees: [0, 90], or 180 for no cone.
+    pub spot_cutoff: f32,
+    /// Constant, linear and quadratic attenuation (each ≥ 0).
+    pub attenuation: [f32; 3],
+}
+
+impl Default for Light {
+    /// GL's defaults for lights other than `GL_LIGHT0`.
+    fn default() -> Light {
+        Light {
+            ambient: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            diffuse: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            specular: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            position: Vec4::new(0.0, 0.0, 1.0, 0.0),
+            spot_direction: Vec3::new(0.0, 0.0, -1.0),
+            spot_exponent: 0.0,
+            spot_cutoff: 180.0,
+            attenuation: [1.0, 0.0, 0.0],
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    pub ambient: Vec4,
+    pub diffuse: Vec4,
+    pub specular: Vec4,
+    pub emission: Vec4,
+    /// [0, 128].
+    pub shininess: f32,
+}
+
+impl Default for Material {
+    fn default() -> Material {
+        Material {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            diffuse: Vec4::new(0.8, 0.8, 0.8, 1.0),
+            specular: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            emission: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            shininess: 0.0,
+        }
+    }
+}
+
+/// Lighting (`GL_LIGHTING` enabled): see `core::vertex` for the equation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lighting {
+    /// The enabled lights only, in any order.
+    pub lights: Vec<Light>,
+    /// `GL_LIGHT_MODEL_AMBIENT`.
+    pub model_ambient: Vec4,
+    /// `GL_LIGHT_MODEL_TWO_SIDE`: back-facing triangles take the color lit with the
+    /// reversed normal and the back material.
+    pub two_side: bool,
+    pub front: Material,
+    pub back: Material,
+    /// `GL_COLOR_MATERIAL`: the vertex color (array or current) replaces the ambient and
+    /// diffuse colors of both materials.
+    pub color_material: bool,
+}
+
+impl Default for Lighting {
+    fn default() -> Lighting {
+        Lighting {
+            lights: Vec::new(),
+            model_ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            two_side: false,
+            front: Material::default(),
+            back: Material::default(),
+            color_material: false,
+        }
+    }
+}
+
+/// Texture coordinates generated from the eye-space normal and position (cube-map texgen,
+/// `OES_texture_cube_map`), before the texture matrix.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TexGen {
+    /// (s, t, r) = the eye-space normal.
+    NormalMap,
+    /// (s, t, r) = the eye-space reflection vector u − 2n(n·u), u the unit vector from the
+    /// eye to the vertex.
+    ReflectionMap,
+}
+
+/// Point parameters (ES 1.1 §3.3): the derived size is
+/// `clamp(size · sqrt(1 / (a + b·d + c·d²)), min, max)` with d the eye-space distance.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointParams {
+    pub size_min: f32,
+    pub size_max: f32,
+    /// a, b, c.
+    pub attenuation: [f32; 3],
+    /// Used only with multisampling (which no target has): below it a point would be drawn
+    /// at the threshold size with its alpha faded.
+    pub fade_threshold: f32,
+}
+
+impl Default for PointParams {
+    fn default() -> PointParams {
+        PointParams {
+            size_min: 0.0,
+            size_max: super::raster::MAX_POINT_SIZE,
+            attenuation: [1.0, 0.0, 0.0],
+            fade_threshold: 1.0,
+        }
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct RenderState {
     pub modelview: Mat4,
@@ -258,6 +379,32 @@ pub struct RenderState {
     pub perspective: Quality,
     pub line_quality: Quality,
     pub point_quality: Quality,
+    /// `Some` when `GL_LIGHTING` is enabled.
+    pub lighting: Option<Lighting>,
+    /// `GL_NORMALIZE` and `GL_RESCALE_NORMAL`.
+    pub normalize: bool,
+    pub rescale_normal: bool,
+    /// The enabled user clip planes in eye coordinates (p · (xe, ye, ze, we) ≥ 0 is
+    /// inside); at most [`crate::core::clip::MAX_USER_PLANES`] are used.
+    pub clip_planes: Vec<Vec4>,
+    /// Per texture unit: the texture matrix, and generated coordinates replacing the
+    /// unit's texture coordinates when `Some`.
+    pub texture_matrices: [Mat4; crate::core::TEXTURE_UNITS],
+    pub texgen: [Option<TexGen>; crate::core::TEXTURE_UNITS],
+    /// `glPointParameter`.
+    pub point_params: PointParams,
+    /// `OES_matrix_palette` (`GL_MATRIX_PALETTE_OES` enabled): the palette matrices, which
+    /// replace the modelview for positions (weighted by the draw call's weights) and, by
+    /// their inverse transposes, for normals.
+    pub matrix_palette: Option<Vec<Mat4>>,
+    /// Per texture unit: `Some` when `GL_TEXTURE_2D` is enabled there and the bound
+    /// texture is complete (a snapshot of its images, shared, so pending draws keep the
+    /// contents they were recorded with), with the unit's environment.
+    pub textures: [Option<super::texenv::TextureUnit>; crate::core::TEXTURE_UNITS],
+    /// `Some` when `GL_FOG` is enabled.
+    pub fog: Option<super::texenv::Fog>,
+    /// `GL_POINT_SPRITE_OES`.
+    pub point_sprite: bool,
 }
 
 impl RenderState {
@@ -295,6 +442,17 @@ impl RenderState {
             perspective: Quality::Balanced,
             line_quality: Quality::Balanced,
             point_quality: Quality::Balanced,
+            lighting: None,
+            normalize: false,
+            rescale_normal: false,
+            clip_planes: Vec::new(),
+            texture_matrices: [Mat4::IDENTITY; crate::core::TEXTURE_UNITS],
+            texgen: [None; crate::core::TEXTURE_UNITS],
+            point_params: PointParams::default(),
+            matrix_palette: None,
+            textures: Default::default(),
+            fog: None,
+            point_sprite: false,
         }
     }
 

@@ -10,6 +10,7 @@
 //! first row the application gave (t = 0).
 
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
 
 use super::target::expand_to_8;
 
@@ -267,6 +268,38 @@ pub enum MagFilter {
 pub enum Wrap {
     Repeat,
     ClampToEdge,
+    /// `OES_texture_mirrored_repeat`.
+    MirroredRepeat,
+}
+
+impl Wrap {
+    /// The texel index `i` of a level `n` texels wide (a power of two) lands on.
+    #[inline(always)]
+    pub fn index(self, i: i32, n: i32) -> i32 {
+        match self {
+            Wrap::Repeat => i & (n - 1),
+            Wrap::ClampToEdge => i.clamp(0, n - 1),
+            Wrap::MirroredRepeat => {
+                let m = i & (2 * n - 1);
+                if m >= n {
+                    2 * n - 1 - m
+                } else {
+                    m
+                }
+            }
+        }
+    }
+
+    /// Whether adding `k` to a coordinate changes nothing sampled: whole periods under
+    /// REPEAT, even ones under MIRRORED_REPEAT (the pipeline subtracts such offsets to keep
+    /// large coordinates precise).
+    pub fn period(self) -> Option<f64> {
+        match self {
+            Wrap::Repeat => Some(1.0),
+            Wrap::MirroredRepeat => Some(2.0),
+            Wrap::ClampToEdge => None,
+        }
+    }
 }
 
 /// A source of generations: every change to any texture takes a new number, so a
@@ -287,8 +320,10 @@ pub struct Texture {
     pub generate_mipmap: bool,
     /// `OES_draw_texture`'s crop rectangle: u, v, width, height in texels.
     pub crop_rect: [i32; 4],
-    /// Levels 0 ..= [`MAX_LEVEL`]; `None` where none has been specified.
-    levels: Vec<Option<Image>>,
+    /// Levels 0 ..= [`MAX_LEVEL`]; `None` where none has been specified. Shared with the
+    /// [`Sampler`] snapshots of pending draws, so a change copies a level rather than
+    /// altering what those draws read.
+    levels: Vec<Option<Arc<Image>>>,
     version: u64,
 }
 
@@ -325,13 +360,13 @@ impl Texture {
     }
 
     pub fn level(&self, level: usize) -> Option<&Image> {
-        self.levels.get(level)?.as_ref()
+        self.levels.get(level)?.as_deref()
     }
 
     /// Replaces `level` (≤ [`MAX_LEVEL`]) with `image`. With [`Texture::generate_mipmap`] set,
     /// a new level 0 also regenerates the whole chain below it.
     pub fn set_level(&mut self, level: usize, image: Image) {
-        self.levels[level] = Some(image);
+        self.levels[level] = Some(Arc::new(image));
         if level == 0 && self.generate_mipmap {
             self.generate_mipmaps();
         }
@@ -348,9 +383,11 @@ impl Texture {
     /// contains the rectangle (the caller checked). Texels are converted to the level's base
     /// format. Regenerates the chain as [`Texture::set_level`] does.
     pub fn write_region(&mut self, level: usize, x: u32, y: u32, w: u32, h: u32, texels: &[u32]) {
-        let img = self.levels[level]
-            .as_mut()
-            .expect("caller checked the level");
+        let img = Arc::make_mut(
+            self.levels[level]
+                .as_mut()
+                .expect("caller checked the level"),
+        );
         for row in 0..h {
             let dst = ((y + row) * img.width + x) as usize;
             let src = (row * w) as usize;
@@ -367,7 +404,7 @@ impl Texture {
     /// Replaces levels 1 ..= log2(max(width, height)) with box-filtered reductions of level
     /// 0 (see [`Image::half`]); deeper levels are removed.
     pub fn generate_mipmaps(&mut self) {
-        let Some(mut img) = self.levels[0].clone() else {
+        let Some(mut img) = self.levels[0].as_deref().cloned() else {
             return;
         };
         if img.width == 0 || img.height == 0 {
@@ -382,7 +419,7 @@ impl Texture {
                 continue;
             }
             img = img.half();
-            self.levels[l] = Some(img.clone());
+            self.levels[l] = Some(Arc::new(img.clone()));
         }
         self.touch();
     }
@@ -414,6 +451,234 @@ impl Texture {
                 !self.min_filter.uses_mipmaps() || self.mipmap_complete()
             }
             _ => false,
+        }
+    }
+}
+
+impl Texture {
+    /// A snapshot of the texture for sampling, sharing its images: `None` when the texture
+    /// is incomplete for its filters (the unit then acts as if texturing were disabled,
+    /// ES 1.1 §3.7.10). Pending draws hold the snapshot, so they keep reading these images
+    /// even if the texture is redefined or deleted before they are rasterized.
+    pub fn sampler(&self) -> Option<Arc<Sampler>> {
+        if !self.is_complete() {
+            return None;
+        }
+        let base = self.level(0)?;
+        let q = if self.min_filter.uses_mipmaps() {
+            base.width.max(base.height).ilog2() as usize
+        } else {
+            0
+        };
+        let levels = self.levels[..=q]
+            .iter()
+            .map(|l| l.clone().expect("complete"))
+            .collect();
+        Some(Arc::new(Sampler::new(
+            levels,
+            self.min_filter,
+            self.mag_filter,
+            self.wrap_s,
+            self.wrap_t,
+        )))
+    }
+}
+
+/// What a texture unit samples: the images of a complete texture (level 0, and the whole
+/// chain when the minification filter uses mipmaps) and its sampler parameters.
+///
+/// Sampling follows ES 1.1 §3.7.7-3.7.8: texel centers at (i + ½)/N; NEAREST takes texel
+/// ⌊u⌋, LINEAR the four texels around u − ½, v − ½ weighted by the fractions, computed in
+/// f32 (24-bit mantissa: with the pipeline's removal of whole REPEAT periods, weights are
+/// exact to well under 2⁻¹² of a texel for every level size). λ = log₂ ρ; λ ≤ c is
+/// magnification, with c = ½ when the magnification filter is LINEAR and the minification
+/// filter NEAREST_MIPMAP_NEAREST or NEAREST_MIPMAP_LINEAR, else 0.
+#[derive(Clone, Debug)]
+pub struct Sampler {
+    pub levels: Vec<Arc<Image>>,
+    pub min: MinFilter,
+    pub mag: MagFilter,
+    pub wrap_s: Wrap,
+    pub wrap_t: Wrap,
+    pub format: BaseFormat,
+    /// The minification / magnification switch-over point.
+    pub c: f32,
+}
+
+impl PartialEq for Sampler {
+    /// The same images (by identity) and parameters.
+    fn eq(&self, o: &Sampler) -> bool {
+        self.levels.len() == o.levels.len()
+            && self
+                .levels
+                .iter()
+                .zip(&o.levels)
+                .all(|(a, b)| Arc::ptr_eq(a, b))
+            && (self.min, self.mag, self.wrap_s, self.wrap_t) == (o.min, o.mag, o.wrap_s, o.wrap_t)
+    }
+}
+
+const INV_255: f32 = 1.0 / 255.0;
+
+#[inline(always)]
+fn unpack_f32(w: u32) -> [f32; 4] {
+    let b = w.to_le_bytes();
+    [b[0] as f32, b[1] as f32, b[2] as f32, b[3] as f32]
+}
+
+/// Floor of a texel-space coordinate as an index; huge values and NaN saturate (any index
+/// is then wrapped or clamped into the level), so no coordinate can fault.
+#[inline(always)]
+fn floor_index(u: f32) -> i32 {
+    u.floor() as i32
+}
+
+impl Sampler {
+    pub fn new(
+        levels: Vec<Arc<Image>>,
+        min: MinFilter,
+        mag: MagFilter,
+        wrap_s: Wrap,
+        wrap_t: Wrap,
+    ) -> Sampler {
+        let c = if mag == MagFilter::Linear
+            && matches!(
+                min,
+                MinFilter::NearestMipmapNearest | MinFilter::NearestMipmapLinear
+            ) {
+            0.5
+        } else {
+            0.0
+        };
+        let format = levels[0].format;
+        Sampler {
+            levels,
+            min,
+            mag,
+            wrap_s,
+            wrap_t,
+            format,
+            c,
+        }
+    }
+
+    /// Level 0's width and height.
+    #[inline]
+    pub fn size(&self) -> (u32, u32) {
+        (self.levels[0].width, self.levels[0].height)
+    }
+
+    /// The texel at wrapped integer coordinates (i, j) of `level`, as an RGBA8 word.
+    #[inline(always)]
+    pub fn texel(&self, level: usize, i: i32, j: i32) -> u32 {
+        let img = &self.levels[level];
+        let (w, h) = (img.width as i32, img.height as i32);
+        let x = self.wrap_s.index(i, w);
+        let y = self.wrap_t.index(j, h);
+        // SAFETY-free: indices are in range by construction of `Wrap::index`.
+        img.texels[(y * w + x) as usize]
+    }
+
+    /// NEAREST at (s, t) in `level`, in 0 ..= 255 per channel.
+    #[inline(always)]
+    pub fn nearest(&self, level: usize, s: f32, t: f32) -> [f32; 4] {
+        let img = &self.levels[level];
+        let i = floor_index(s * img.width as f32);
+        let j = floor_index(t * img.height as f32);
+        unpack_f32(self.texel(level, i, j))
+    }
+
+    /// LINEAR (bilinear) at (s, t) in `level`, in 0 ..= 255 per channel.
+    #[inline(always)]
+    pub fn bilinear(&self, level: usize, s: f32, t: f32) -> [f32; 4] {
+        let img = &self.levels[level];
+        let u = s * img.width as f32 - 0.5;
+        let v = t * img.height as f32 - 0.5;
+        let (fu, fv) = (u.floor(), v.floor());
+        let (i, j) = (fu as i32, fv as i32);
+        let (a, b) = (u - fu, v - fv);
+        let t00 = unpack_f32(self.texel(level, i, j));
+        let t10 = unpack_f32(self.texel(level, i.wrapping_add(1), j));
+        let t01 = unpack_f32(self.texel(level, i, j.wrapping_add(1)));
+        let t11 = unpack_f32(self.texel(level, i.wrapping_add(1), j.wrapping_add(1)));
+        std::array::from_fn(|c| {
+            let top = t00[c] + (t10[c] - t00[c]) * a;
+            let bottom = t01[c] + (t11[c] - t01[c]) * a;
+            top + (bottom - top) * b
+        })
+    }
+
+    #[inline(always)]
+    fn filter(&self, linear: bool, level: usize, s: f32, t: f32) -> [f32; 4] {
+        if linear {
+            self.bilinear(level, s, t)
+        } else {
+            self.nearest(level, s, t)
+        }
+    }
+
+    /// λ from ρ², the larger squared length of the texel-space derivative vectors
+    /// (`du/dx, dv/dx` and `du/dy, dv/dy`, in level-0 texels per pixel).
+    #[inline(always)]
+    pub fn lambda(rho2: f32) -> f32 {
+        // log2(sqrt(x)) = log2(x) / 2; ρ = 0 gives −∞ (magnification).
+        0.5 * rho2.log2()
+    }
+
+    /// LINEAR_MIPMAP_LINEAR minification, LINEAR magnification, in 0 ..= 255 per channel.
+    #[inline(always)]
+    pub fn trilinear(&self, s: f32, t: f32, lambda: f32) -> [f32; 4] {
+        if lambda.is_nan() || lambda <= self.c {
+            return self.bilinear(0, s, t);
+        }
+        let q = self.levels.len() - 1;
+        if lambda >= q as f32 {
+            return self.bilinear(q, s, t);
+        }
+        let d1 = lambda as usize;
+        let f = lambda - d1 as f32;
+        let a = self.bilinear(d1, s, t);
+        let b = self.bilinear(d1 + 1, s, t);
+        std::array::from_fn(|c| a[c] + (b[c] - a[c]) * f)
+    }
+
+    /// The filtered texture value at (s, t) with level of detail λ, in [0, 1] per channel.
+    #[inline]
+    pub fn sample(&self, s: f32, t: f32, lambda: f32) -> [f32; 4] {
+        let v = self.sample_255(s, t, lambda);
+        v.map(|c| c * INV_255)
+    }
+
+    /// [`Sampler::sample`] in 0 ..= 255 per channel.
+    #[inline]
+    pub fn sample_255(&self, s: f32, t: f32, lambda: f32) -> [f32; 4] {
+        // NaN λ (from degenerate derivatives) counts as magnification.
+        if lambda.is_nan() || lambda <= self.c {
+            return self.filter(self.mag == MagFilter::Linear, 0, s, t);
+        }
+        let q = self.levels.len() - 1;
+        match self.min {
+            MinFilter::Nearest => self.nearest(0, s, t),
+            MinFilter::Linear => self.bilinear(0, s, t),
+            MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
+                let d = if lambda <= 0.5 {
+                    0
+                } else {
+                    ((lambda + 0.5).ceil() - 1.0).min(q as f32) as usize
+                };
+                self.filter(self.min == MinFilter::LinearMipmapNearest, d, s, t)
+            }
+            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
+                let linear = self.min == MinFilter::LinearMipmapLinear;
+                if lambda >= q as f32 {
+                    return self.filter(linear, q, s, t);
+                }
+                let d1 = lambda.floor() as usize;
+                let f = lambda - d1 as f32;
+                let a = self.filter(linear, d1, s, t);
+                let b = self.filter(linear, d1 + 1, s, t);
+                std::array::from_fn(|c| a[c] + (b[c] - a[c]) * f)
+            }
         }
     }
 }

@@ -1,11 +1,17 @@
-//! The vertex stage: fetch any array type to f32, transform to clip space, and carry the
-//! per-vertex values the later stages interpolate.
+//! The vertex stage: fetch any array type to f32, transform to eye and clip space (with
+//! matrix-palette skinning), light, transform texture coordinates, derive point sizes and
+//! user clip distances, and carry the per-vertex values the later stages interpolate.
+//! `transform` runs one vertex; `lighting` holds the lighting equation.
 
-use glam::Vec4;
+use glam::{Vec3, Vec4};
 
+use super::clip::MAX_USER_PLANES;
 use super::fixed;
 use super::state::RenderState;
-use super::OutOfMemory;
+use super::{OutOfMemory, TEXTURE_UNITS};
+
+pub mod lighting;
+mod transform;
 
 /// The component types vertex arrays can hold.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -220,23 +226,83 @@ impl Primitive {
 }
 
 /// Everything a draw call reads. Arrays that are disabled are `Constant` sources holding the
-/// current value.
+/// current value. Build one with [`DrawCall::new`] and set the inputs that are used.
 #[derive(Clone, Copy, Debug)]
 pub struct DrawCall<'a> {
     pub primitive: Primitive,
     pub indices: Indices<'a>,
     pub position: AttribArray<'a>,
+    /// Colors as given (not clamped); the vertex stage clamps them.
     pub color: AttribSource<'a>,
+    /// Read only when lighting or normal-based texgen is on.
+    pub normal: AttribSource<'a>,
+    pub texcoord: [AttribSource<'a>; TEXTURE_UNITS],
+    /// `OES_point_size_array`: per-vertex sizes (component 0); `None` takes
+    /// `RenderState::point_size`.
+    pub point_size: Option<AttribArray<'a>>,
+    /// `OES_matrix_palette`, read when `RenderState::matrix_palette` is `Some`: per vertex,
+    /// `weight.size` palette matrices, indices (`matrix_index`, whole numbers) and weights.
+    /// Without an index array every index is 0; without a weight array the vertex takes
+    /// matrix `index[0]` with weight 1.
+    pub matrix_index: Option<AttribArray<'a>>,
+    pub weight: Option<AttribArray<'a>>,
+}
+
+impl<'a> DrawCall<'a> {
+    /// A draw of `position` with every other input at its GL default: color (1, 1, 1, 1),
+    /// normal (0, 0, 1), texture coordinates (0, 0, 0, 1), the state's point size, no
+    /// palette arrays.
+    pub fn new(primitive: Primitive, indices: Indices<'a>, position: AttribArray<'a>) -> Self {
+        DrawCall {
+            primitive,
+            indices,
+            position,
+            color: AttribSource::Constant([1.0; 4]),
+            normal: AttribSource::Constant([0.0, 0.0, 1.0, 0.0]),
+            texcoord: [AttribSource::Constant([0.0, 0.0, 0.0, 1.0]); TEXTURE_UNITS],
+            point_size: None,
+            matrix_index: None,
+            weight: None,
+        }
+    }
 }
 
 /// A vertex after the vertex stage, in clip space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipVertex {
     pub pos: Vec4,
+    /// The (lit) color, clamped to [0, 1].
     pub color: Vec4,
+    /// The color for back-facing triangles: with two-sided lighting lit with the reversed
+    /// normal and the back material, otherwise equal to `color`.
+    pub back_color: Vec4,
+    /// Texture coordinates per unit after the texture matrix (q included, not divided).
+    pub tex: [Vec4; TEXTURE_UNITS],
+    /// The eye-space position (x, y, z of the homogeneous eye coordinates), for fog
+    /// distance and point attenuation.
+    pub eye: Vec3,
+    /// The derived point size (points only; 1 elsewhere), before the rasterizer's clamp to
+    /// its supported range.
+    pub point_size: f32,
+    /// Signed distances to the enabled user clip planes, in `RenderState::clip_planes`
+    /// order (unused entries 0); negative is outside.
+    pub clip_dist: [f32; MAX_USER_PLANES],
 }
 
 impl ClipVertex {
+    /// A vertex at clip position `pos` with `color` and every other value at its default.
+    pub fn new(pos: Vec4, color: Vec4) -> ClipVertex {
+        ClipVertex {
+            pos,
+            color,
+            back_color: color,
+            tex: [Vec4::new(0.0, 0.0, 0.0, 1.0); TEXTURE_UNITS],
+            eye: Vec3::ZERO,
+            point_size: 1.0,
+            clip_dist: [0.0; MAX_USER_PLANES],
+        }
+    }
+
     /// The vertex a fraction `t` of the way from `self` to `o`, every value interpolated
     /// linearly in clip space, as clipping requires.
     #[inline]
@@ -244,43 +310,80 @@ impl ClipVertex {
         ClipVertex {
             pos: self.pos + (o.pos - self.pos) * t,
             color: self.color + (o.color - self.color) * t,
+            back_color: self.back_color + (o.back_color - self.back_color) * t,
+            tex: std::array::from_fn(|u| self.tex[u] + (o.tex[u] - self.tex[u]) * t),
+            eye: self.eye + (o.eye - self.eye) * t,
+            point_size: self.point_size + (o.point_size - self.point_size) * t,
+            clip_dist: std::array::from_fn(|i| {
+                self.clip_dist[i] + (o.clip_dist[i] - self.clip_dist[i]) * t
+            }),
         }
     }
 }
 
-/// Transformed vertices of one draw call, addressed by vertex number.
+/// Transformed vertices of one draw call, addressed by vertex number. This is the
+/// post-transform vertex cache: every distinct vertex number a draw uses is transformed and
+/// lit exactly once, however often its primitives refer to it.
 pub struct Vertices {
-    base: usize,
     list: Vec<ClipVertex>,
+    map: VertexMap,
+}
+
+enum VertexMap {
+    /// `list[i − base]` for every number in the index range.
+    Dense { base: usize },
+    /// `list[k]` for `keys[k]`: the sorted distinct numbers of a sparse index list.
+    Sparse { keys: Vec<usize> },
 }
 
 impl std::ops::Index<usize> for Vertices {
     type Output = ClipVertex;
     #[inline]
     fn index(&self, i: usize) -> &ClipVertex {
-        &self.list[i - self.base]
+        match &self.map {
+            VertexMap::Dense { base } => &self.list[i - base],
+            VertexMap::Sparse { keys } => {
+                &self.list[keys.binary_search(&i).expect("vertex of this draw")]
+            }
+        }
     }
 }
 
-/// Runs the vertex stage for every vertex in the draw call's index range. The range comes
-/// from the caller, so its allocation is fallible rather than aborting.
+/// Runs the vertex stage for every distinct vertex the draw call uses. An index list that
+/// touches at least half of its range is transformed over the whole range (no lookup
+/// structure); a sparser one only at its distinct indices. The counts come from the
+/// caller, so allocations are fallible rather than aborting.
 pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMemory> {
     let mut list = Vec::new();
     let Some((lo, hi)) = draw.indices.range() else {
-        return Ok(Vertices { base: 0, list });
+        return Ok(Vertices {
+            list,
+            map: VertexMap::Dense { base: 0 },
+        });
     };
-    list.try_reserve_exact(hi - lo + 1)
+    let stage = transform::Stage::new(state, draw);
+    let span = hi - lo + 1;
+    let n = draw.indices.len();
+    if matches!(draw.indices, Indices::Range { .. }) || span <= n.saturating_mul(2) {
+        list.try_reserve_exact(span).map_err(|_| OutOfMemory)?;
+        list.extend((lo..=hi).map(|i| stage.vertex(i)));
+        return Ok(Vertices {
+            list,
+            map: VertexMap::Dense { base: lo },
+        });
+    }
+    let mut keys = Vec::new();
+    keys.try_reserve_exact(n).map_err(|_| OutOfMemory)?;
+    keys.extend((0..n).map(|k| draw.indices.get(k)));
+    keys.sort_unstable();
+    keys.dedup();
+    list.try_reserve_exact(keys.len())
         .map_err(|_| OutOfMemory)?;
-    let mvp = state.projection * state.modelview;
-    list.extend((lo..=hi).map(|i| {
-        let p = Vec4::from_array(draw.position.fetch(i));
-        let c = Vec4::from_array(draw.color.fetch(i)).clamp(Vec4::ZERO, Vec4::ONE);
-        ClipVertex {
-            pos: mvp * p,
-            color: c,
-        }
-    }));
-    Ok(Vertices { base: lo, list })
+    list.extend(keys.iter().map(|&i| stage.vertex(i)));
+    Ok(Vertices {
+        list,
+        map: VertexMap::Sparse { keys },
+    })
 }
 
 #[cfg(test)]

@@ -3,9 +3,10 @@
 use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
 use super::buffer::lock_objects;
-use super::context::{Context, SharedObjects, MAX_TEXTURE_UNITS};
+use super::context::{Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
 use super::ffi::client_bytes;
 use super::tokens::*;
+use super::tokens_ext::*;
 use super::types::*;
 
 /// One `gl*Pointer` binding: the layout as given and the client address.
@@ -41,6 +42,9 @@ pub struct ClientArrays {
     pub normal: ArrayPointer,
     pub texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
     pub point_size: ArrayPointer,
+    /// `OES_matrix_palette`.
+    pub matrix_index: ArrayPointer,
+    pub weight: ArrayPointer,
     pub client_active_texture: usize,
     /// The current color, used when the color array is disabled.
     pub color_value: [f32; 4],
@@ -61,6 +65,8 @@ impl ClientArrays {
         f(&mut self.normal);
         self.texcoord.iter_mut().for_each(&mut f);
         f(&mut self.point_size);
+        f(&mut self.matrix_index);
+        f(&mut self.weight);
     }
 }
 
@@ -72,6 +78,11 @@ impl Default for ClientArrays {
             normal: ArrayPointer::new(3),
             texcoord: [ArrayPointer::new(4); MAX_TEXTURE_UNITS],
             point_size: ArrayPointer::new(1),
+            matrix_index: ArrayPointer {
+                ty: GL_UNSIGNED_BYTE,
+                ..ArrayPointer::new(0)
+            },
+            weight: ArrayPointer::new(0),
             client_active_texture: 0,
             color_value: [1.0; 4],
         }
@@ -88,6 +99,9 @@ pub enum ArrayKind {
     TexCoord,
     /// OES_point_size_array.
     PointSize,
+    /// OES_matrix_palette.
+    MatrixIndex,
+    Weight,
 }
 
 fn component_type(ty: GLenum) -> Option<ComponentType> {
@@ -132,6 +146,8 @@ impl Context {
             ArrayKind::Normal => (&[3], &[GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT]),
             ArrayKind::TexCoord => (&[2, 3, 4], &[GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT]),
             ArrayKind::PointSize => (&[1], &[GL_FIXED, GL_FLOAT]),
+            ArrayKind::MatrixIndex => (&[1, 2, 3, 4][..MAX_VERTEX_UNITS], &[GL_UNSIGNED_BYTE]),
+            ArrayKind::Weight => (&[1, 2, 3, 4][..MAX_VERTEX_UNITS], &[GL_FIXED, GL_FLOAT]),
         };
         if !types.contains(&ty) {
             return self.set_error(GL_INVALID_ENUM);
@@ -145,6 +161,8 @@ impl Context {
             ArrayKind::Normal => &mut self.arrays.normal,
             ArrayKind::TexCoord => &mut self.arrays.texcoord[self.arrays.client_active_texture],
             ArrayKind::PointSize => &mut self.arrays.point_size,
+            ArrayKind::MatrixIndex => &mut self.arrays.matrix_index,
+            ArrayKind::Weight => &mut self.arrays.weight,
         };
         a.size = size;
         a.ty = ty;
@@ -161,6 +179,8 @@ impl Context {
             GL_NORMAL_ARRAY => &mut self.arrays.normal,
             GL_TEXTURE_COORD_ARRAY => &mut self.arrays.texcoord[unit],
             GL_POINT_SIZE_ARRAY_OES => &mut self.arrays.point_size,
+            GL_MATRIX_INDEX_ARRAY_OES => &mut self.arrays.matrix_index,
+            GL_WEIGHT_ARRAY_OES => &mut self.arrays.weight,
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         a.enabled = on;
@@ -208,27 +228,69 @@ impl Context {
         }
         // Make room first: the frame must not flush while the share group is locked below.
         self.with_frame(|_| ());
+        // Before the share group is locked: the state snapshots textures, which locks it.
+        let state = self.render_state();
         let shared = self.shared.clone();
         let objects = lock_objects(&shared);
         let position = match array_view(&objects, &self.arrays.vertex, hi, false) {
             Ok(a) => a,
             Err(e) => return self.array_error(e),
         };
-        let color = if self.arrays.color.enabled && self.arrays.color.is_set() {
-            match array_view(&objects, &self.arrays.color, hi, true) {
-                Ok(a) => AttribSource::Array(a),
-                Err(e) => return self.array_error(e),
+        // Enabled arrays are read; disabled ones give the current value.
+        let view =
+            |a: &ArrayPointer, normalized: bool| -> Result<Option<AttribArray<'_>>, ArrayError> {
+                if a.enabled && a.is_set() {
+                    array_view(&objects, a, hi, normalized).map(Some)
+                } else {
+                    Ok(None)
+                }
+            };
+        fn source(v: Option<AttribArray<'_>>, current: [f32; 4]) -> AttribSource<'_> {
+            match v {
+                Some(a) => AttribSource::Array(a),
+                None => AttribSource::Constant(current),
             }
-        } else {
-            AttribSource::Constant(self.arrays.color_value)
+        }
+        let a = &self.arrays;
+        let n = self.current.normal;
+        let palette = self.enables.matrix_palette;
+        let views = (|| {
+            Ok::<_, ArrayError>((
+                view(&a.color, true)?,
+                view(&a.normal, true)?,
+                {
+                    let mut t = [None; MAX_TEXTURE_UNITS];
+                    for (t, a) in t.iter_mut().zip(&a.texcoord) {
+                        *t = view(a, false)?;
+                    }
+                    t
+                },
+                view(&a.point_size, false)?,
+                if palette {
+                    view(&a.matrix_index, false)?
+                } else {
+                    None
+                },
+                if palette {
+                    view(&a.weight, false)?
+                } else {
+                    None
+                },
+            ))
+        })();
+        let (color, normal, texcoord, point_size, matrix_index, weight) = match views {
+            Ok(v) => v,
+            Err(e) => return self.array_error(e),
         };
-        let call = DrawCall {
-            primitive,
-            indices,
-            position,
-            color,
-        };
-        let state = self.render_state();
+        let mut call = DrawCall::new(primitive, indices, position);
+        call.color = source(color, a.color_value);
+        call.normal = source(normal, [n[0], n[1], n[2], 0.0]);
+        let mut texcoord = texcoord.into_iter();
+        call.texcoord =
+            std::array::from_fn(|u| source(texcoord.next().flatten(), self.current.texcoord[u]));
+        call.point_size = point_size;
+        call.matrix_index = matrix_index;
+        call.weight = weight;
         if let Some(Err(_)) = self.with_frame(|frame| core::record(&state, &call, frame)) {
             self.set_error(GL_OUT_OF_MEMORY);
         }
@@ -253,7 +315,7 @@ impl Context {
     }
 
     /// `glDrawElements` with `GL_ELEMENT_ARRAY_BUFFER` bound: `count` indices of `size` bytes
-    /// (1 or 2) at byte `offset` of the buffer. Indices reaching past the buffer's end skip
+    /// (1, 2 or 4) at byte `offset` of the buffer. Indices reaching past the buffer's end skip
     /// the draw.
     pub fn draw_elements_from_buffer(
         &mut self,
@@ -278,14 +340,22 @@ impl Context {
                 None => return,
             }
         };
-        if size == 1 {
-            self.draw(prim, Indices::U8(&bytes));
-        } else {
-            let shorts: Vec<u16> = bytes
-                .chunks_exact(2)
-                .map(|b| u16::from_ne_bytes([b[0], b[1]]))
-                .collect();
-            self.draw(prim, Indices::U16(&shorts));
+        match size {
+            1 => self.draw(prim, Indices::U8(&bytes)),
+            2 => {
+                let shorts: Vec<u16> = bytes
+                    .chunks_exact(2)
+                    .map(|b| u16::from_ne_bytes([b[0], b[1]]))
+                    .collect();
+                self.draw(prim, Indices::U16(&shorts));
+            }
+            _ => {
+                let ints: Vec<u32> = bytes
+                    .chunks_exact(4)
+                    .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+                    .collect();
+                self.draw(prim, Indices::U32(&ints));
+            }
         }
     }
 }

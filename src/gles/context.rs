@@ -21,6 +21,7 @@ use super::per_fragment::FragmentState;
 use super::raster_state::PointLineState;
 use super::texenv::TexEnv;
 use super::tokens::*;
+use super::tokens_ext::*;
 use super::types::*;
 
 /// What a context draws into. EGL surfaces implement it; the context only needs the target
@@ -46,12 +47,17 @@ pub const MAX_CLIP_PLANES: usize = 6;
 pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
 pub const MAX_PROJECTION_STACK_DEPTH: usize = 2;
 pub const MAX_TEXTURE_STACK_DEPTH: usize = 2;
+/// `OES_matrix_palette`: palette matrices and matrices per vertex.
+pub const MAX_PALETTE_MATRICES: usize = 32;
+pub const MAX_VERTEX_UNITS: usize = 4;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MatrixMode {
     Modelview,
     Projection,
     Texture,
+    /// `GL_MATRIX_PALETTE_OES`: the current palette matrix.
+    Palette,
 }
 
 /// The `glHint` targets, each FASTEST, NICEST or DONT_CARE.
@@ -79,6 +85,7 @@ pub struct Enables {
     pub light: [bool; MAX_LIGHTS],
     pub lighting: bool,
     pub line_smooth: bool,
+    pub matrix_palette: bool,
     pub multisample: bool,
     pub normalize: bool,
     pub point_smooth: bool,
@@ -108,6 +115,7 @@ impl Enables {
             GL_FOG => &mut self.fog,
             GL_LIGHTING => &mut self.lighting,
             GL_LINE_SMOOTH => &mut self.line_smooth,
+            GL_MATRIX_PALETTE_OES => &mut self.matrix_palette,
             GL_MULTISAMPLE => &mut self.multisample,
             GL_NORMALIZE => &mut self.normalize,
             GL_POINT_SMOOTH => &mut self.point_smooth,
@@ -146,6 +154,9 @@ pub struct Context {
     pub(super) projection: Vec<Mat4>,
     pub(super) texture: [Vec<Mat4>; MAX_TEXTURE_UNITS],
     pub(super) active_texture: usize,
+    /// `OES_matrix_palette`: the palette and `glCurrentPaletteMatrixOES`'s index.
+    pub(super) palette: [Mat4; MAX_PALETTE_MATRICES],
+    pub(super) current_palette: usize,
     pub(super) viewport: Viewport,
     pub(super) depth_range: [f32; 2],
     pub(super) scissor_box: Rect,
@@ -197,6 +208,8 @@ impl Context {
             projection: vec![Mat4::IDENTITY],
             texture: std::array::from_fn(|_| vec![Mat4::IDENTITY]),
             active_texture: 0,
+            palette: [Mat4::IDENTITY; MAX_PALETTE_MATRICES],
+            current_palette: 0,
             viewport: Viewport {
                 x: 0,
                 y: 0,
@@ -349,7 +362,75 @@ impl Context {
             ..RenderState::new(self.viewport.width, self.viewport.height)
         };
         self.fragment_render_state(&mut rs);
+        self.texture_render_state(&mut rs);
+        self.geometry_render_state(&mut rs);
         rs
+    }
+
+    /// The vertex-stage part of the core's state: lighting, normal processing, user clip
+    /// planes, texture matrices, point parameters and the matrix palette.
+    fn geometry_render_state(&self, rs: &mut RenderState) {
+        use crate::core::state;
+        use glam::{Vec3, Vec4};
+        let e = &self.enables;
+        let l = &self.lighting;
+        rs.lighting = e.lighting.then(|| {
+            let v4 = Vec4::from_array;
+            let material = state::Material {
+                ambient: v4(l.material.ambient),
+                diffuse: v4(l.material.diffuse),
+                specular: v4(l.material.specular),
+                emission: v4(l.material.emission),
+                shininess: l.material.shininess,
+            };
+            state::Lighting {
+                lights: l
+                    .lights
+                    .iter()
+                    .zip(e.light)
+                    .filter(|(_, on)| *on)
+                    .map(|(g, _)| state::Light {
+                        ambient: v4(g.ambient),
+                        diffuse: v4(g.diffuse),
+                        specular: v4(g.specular),
+                        position: v4(g.position),
+                        spot_direction: Vec3::from_array(g.spot_direction),
+                        spot_exponent: g.spot_exponent,
+                        spot_cutoff: g.spot_cutoff,
+                        attenuation: [
+                            g.constant_attenuation,
+                            g.linear_attenuation,
+                            g.quadratic_attenuation,
+                        ],
+                    })
+                    .collect(),
+                model_ambient: v4(l.model_ambient),
+                two_side: l.two_side,
+                front: material,
+                back: material,
+                color_material: e.color_material,
+            }
+        });
+        rs.normalize = e.normalize;
+        rs.rescale_normal = e.rescale_normal;
+        rs.clip_planes = self
+            .clip_planes
+            .planes
+            .iter()
+            .zip(e.clip_plane)
+            .filter(|(_, on)| *on)
+            .map(|(p, _)| Vec4::from_array(*p))
+            .collect();
+        rs.texture_matrices =
+            std::array::from_fn(|u| *self.texture[u].last().expect("stack never empty"));
+        let pl = &self.points_lines;
+        rs.point_params = state::PointParams {
+            size_min: pl.point_size_min,
+            size_max: pl.point_size_max,
+            attenuation: pl.point_distance_attenuation,
+            fade_threshold: pl.point_fade_threshold_size,
+        };
+        rs.matrix_palette = e.matrix_palette.then(|| self.palette.to_vec());
     }
 }
 

@@ -4,6 +4,7 @@
 use super::context::{Context, MAX_TEXTURE_UNITS};
 use super::get::Value;
 use super::tokens::*;
+use super::tokens_ext::*;
 use super::types::*;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,6 +69,8 @@ impl Context {
             GL_COLOR_ARRAY_POINTER => a.color.ptr,
             GL_TEXTURE_COORD_ARRAY_POINTER => a.texcoord[a.client_active_texture].ptr,
             GL_POINT_SIZE_ARRAY_POINTER_OES => a.point_size.ptr,
+            GL_MATRIX_INDEX_ARRAY_POINTER_OES => a.matrix_index.ptr,
+            GL_WEIGHT_ARRAY_POINTER_OES => a.weight.ptr,
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
@@ -84,6 +87,8 @@ impl Context {
             GL_COLOR_ARRAY => a.color.enabled,
             GL_TEXTURE_COORD_ARRAY => a.texcoord[a.client_active_texture].enabled,
             GL_POINT_SIZE_ARRAY_OES => a.point_size.enabled,
+            GL_MATRIX_INDEX_ARRAY_OES => a.matrix_index.enabled,
+            GL_WEIGHT_ARRAY_OES => a.weight.enabled,
             _ => return None,
         })
     }

@@ -7,6 +7,7 @@ use crate::core::{fixed, MAX_VIEWPORT_DIM, SUBPIXEL_BITS};
 
 use super::context::*;
 use super::tokens::*;
+use super::tokens_ext::*;
 use super::types::*;
 
 /// The natural type of a state value, which decides how each getter converts it.
@@ -107,7 +108,6 @@ pub const RENDERER: &[u8] = b"gles-cm software rasterizer\0";
 /// "OpenGL ES-CM 1.1", a space, then the implementation's own version (ES 1.1 §6.1.5).
 pub const VERSION: &[u8] =
     concat!("OpenGL ES-CM 1.1 gles-cm-", env!("CARGO_PKG_VERSION"), "\0").as_bytes();
-/// Exactly the extensions that are implemented, space-separated.
 /// The extensions `GL_EXTENSIONS` names, one per line (add a line where one starts working).
 const EXTENSION_LIST: &[&str] = &[
     "GL_OES_read_format",
@@ -117,6 +117,10 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_blend_func_separate",
     "GL_OES_blend_equation_separate",
     "GL_OES_stencil_wrap",
+    "GL_OES_element_index_uint",
+    "GL_OES_matrix_get",
+    "GL_OES_matrix_palette",
+    "GL_OES_query_matrix",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
@@ -178,6 +182,10 @@ impl Context {
         let sb = self.scissor_box;
         let a = &self.arrays;
         let matrix = |m: &glam::Mat4| Value::floats(&m.to_cols_array());
+        let float_bits = |m: &glam::Mat4| {
+            let b = m.to_cols_array().map(|v| v.to_bits() as i32 as i64);
+            Value::ints(&b)
+        };
         Some(match pname {
             GL_VIEWPORT => {
                 Value::ints(&[vp.x as i64, vp.y as i64, vp.width as i64, vp.height as i64])
@@ -213,10 +221,28 @@ impl Context {
                 MatrixMode::Modelview => GL_MODELVIEW,
                 MatrixMode::Projection => GL_PROJECTION,
                 MatrixMode::Texture => GL_TEXTURE,
+                MatrixMode::Palette => GL_MATRIX_PALETTE_OES,
             } as i64),
             GL_MODELVIEW_MATRIX => matrix(self.modelview.last()?),
             GL_PROJECTION_MATRIX => matrix(self.projection.last()?),
             GL_TEXTURE_MATRIX => matrix(self.texture[unit].last()?),
+            // OES_matrix_get: the IEEE-754 bit patterns, for glGetIntegerv.
+            GL_MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES => float_bits(self.modelview.last()?),
+            GL_PROJECTION_MATRIX_FLOAT_AS_INT_BITS_OES => float_bits(self.projection.last()?),
+            GL_TEXTURE_MATRIX_FLOAT_AS_INT_BITS_OES => float_bits(self.texture[unit].last()?),
+            GL_MAX_PALETTE_MATRICES_OES => Value::int(MAX_PALETTE_MATRICES as i64),
+            GL_MAX_VERTEX_UNITS_OES => Value::int(MAX_VERTEX_UNITS as i64),
+            GL_CURRENT_PALETTE_MATRIX_OES => Value::int(self.current_palette as i64),
+            GL_MATRIX_INDEX_ARRAY_OES => Value::bools(&[a.matrix_index.enabled]),
+            GL_MATRIX_INDEX_ARRAY_SIZE_OES => Value::int(a.matrix_index.size as i64),
+            GL_MATRIX_INDEX_ARRAY_TYPE_OES => Value::int(a.matrix_index.ty as i64),
+            GL_MATRIX_INDEX_ARRAY_STRIDE_OES => Value::int(a.matrix_index.stride as i64),
+            GL_MATRIX_INDEX_ARRAY_BUFFER_BINDING_OES => Value::int(a.matrix_index.buffer as i64),
+            GL_WEIGHT_ARRAY_OES => Value::bools(&[a.weight.enabled]),
+            GL_WEIGHT_ARRAY_SIZE_OES => Value::int(a.weight.size as i64),
+            GL_WEIGHT_ARRAY_TYPE_OES => Value::int(a.weight.ty as i64),
+            GL_WEIGHT_ARRAY_STRIDE_OES => Value::int(a.weight.stride as i64),
+            GL_WEIGHT_ARRAY_BUFFER_BINDING_OES => Value::int(a.weight.buffer as i64),
             GL_MODELVIEW_STACK_DEPTH => Value::int(self.modelview.len() as i64),
             GL_PROJECTION_STACK_DEPTH => Value::int(self.projection.len() as i64),
             GL_TEXTURE_STACK_DEPTH => Value::int(self.texture[unit].len() as i64),

@@ -3,10 +3,11 @@
 use glam::{Mat4, Vec3};
 
 use super::context::{
-    Context, MatrixMode, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH,
-    MAX_TEXTURE_STACK_DEPTH,
+    Context, MatrixMode, MAX_MODELVIEW_STACK_DEPTH, MAX_PALETTE_MATRICES,
+    MAX_PROJECTION_STACK_DEPTH, MAX_TEXTURE_STACK_DEPTH,
 };
 use super::tokens::*;
+use super::tokens_ext::*;
 use super::types::*;
 
 impl Context {
@@ -18,11 +19,67 @@ impl Context {
                 &mut self.texture[self.active_texture],
                 MAX_TEXTURE_STACK_DEPTH,
             ),
+            // The palette has no stack (OES_matrix_palette): see push_matrix.
+            MatrixMode::Palette => unreachable!("the palette has no stack"),
         }
     }
 
     fn current(&mut self) -> &mut Mat4 {
+        if self.matrix_mode == MatrixMode::Palette {
+            return &mut self.palette[self.current_palette];
+        }
         self.stack().0.last_mut().expect("stack never empty")
+    }
+
+    /// The current matrix of the current matrix mode.
+    pub(super) fn current_matrix(&self) -> Mat4 {
+        match self.matrix_mode {
+            MatrixMode::Modelview => *self.modelview.last().expect("stack never empty"),
+            MatrixMode::Projection => *self.projection.last().expect("stack never empty"),
+            MatrixMode::Texture => *self.texture[self.active_texture]
+                .last()
+                .expect("stack never empty"),
+            MatrixMode::Palette => self.palette[self.current_palette],
+        }
+    }
+
+    /// `glQueryMatrixxOES`: each element of the current matrix as a 16.16 mantissa and a
+    /// power-of-two exponent (exact to 2⁻¹⁵ relative), and the status bits of the elements
+    /// that are NaN or infinite (their mantissa and exponent are 0).
+    pub fn query_matrix(&self) -> ([GLfixed; 16], [GLint; 16], GLbitfield) {
+        let m = self.current_matrix().to_cols_array();
+        let (mut mant, mut exp, mut status) = ([0; 16], [0; 16], 0);
+        for (i, &v) in m.iter().enumerate() {
+            if !v.is_finite() {
+                status |= 1 << i;
+                continue;
+            }
+            // Shift large values down until the mantissa fits below 2¹⁵.
+            let mut e = 0;
+            let mut f = v as f64;
+            while f.abs() >= 32767.0 {
+                f *= 0.5;
+                e += 1;
+            }
+            mant[i] = crate::core::fixed::from_f32(f as f32);
+            exp[i] = e;
+        }
+        (mant, exp, status)
+    }
+
+    /// `glCurrentPaletteMatrixOES`: selects the palette matrix that matrix operations in
+    /// `GL_MATRIX_PALETTE_OES` mode change.
+    pub fn current_palette_matrix(&mut self, index: u32) {
+        if index as usize >= MAX_PALETTE_MATRICES {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        self.current_palette = index as usize;
+    }
+
+    /// `glLoadPaletteFromModelViewMatrixOES`: copies the current modelview matrix into the
+    /// current palette matrix.
+    pub fn load_palette_from_modelview(&mut self) {
+        self.palette[self.current_palette] = *self.modelview.last().expect("stack never empty");
     }
 
     pub fn matrix_mode(&mut self, mode: GLenum) {
@@ -30,11 +87,17 @@ impl Context {
             GL_MODELVIEW => MatrixMode::Modelview,
             GL_PROJECTION => MatrixMode::Projection,
             GL_TEXTURE => MatrixMode::Texture,
+            GL_MATRIX_PALETTE_OES => MatrixMode::Palette,
             _ => return self.set_error(GL_INVALID_ENUM),
         };
     }
 
     pub fn push_matrix(&mut self) {
+        // The palette matrices have no stacks: pushing or popping them is an invalid
+        // operation (OES_matrix_palette).
+        if self.matrix_mode == MatrixMode::Palette {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
         let (stack, max) = self.stack();
         if stack.len() >= max {
             return self.set_error(GL_STACK_OVERFLOW);
@@ -44,6 +107,9 @@ impl Context {
     }
 
     pub fn pop_matrix(&mut self) {
+        if self.matrix_mode == MatrixMode::Palette {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
         let (stack, _) = self.stack();
         if stack.len() <= 1 {
             return self.set_error(GL_STACK_UNDERFLOW);

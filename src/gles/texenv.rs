@@ -1,6 +1,10 @@
 //! Texture environments (ES 1.1 §3.7.12), one per texture unit, and the per-unit point
 //! sprite coordinate replacement (OES_point_sprite). Not part of any texture object.
 
+use crate::core::state::Quality;
+use crate::core::texenv as core_env;
+use crate::core::RenderState;
+
 use super::context::{Context, MAX_TEXTURE_UNITS};
 use super::get::Value;
 use super::params::{clamp01, Params};
@@ -218,5 +222,105 @@ impl Context {
             }
         };
         Some(v)
+    }
+}
+
+fn combine_func(e: GLenum) -> core_env::CombineFunc {
+    use core_env::CombineFunc as F;
+    match e {
+        GL_REPLACE => F::Replace,
+        GL_ADD => F::Add,
+        GL_ADD_SIGNED => F::AddSigned,
+        GL_INTERPOLATE => F::Interpolate,
+        GL_SUBTRACT => F::Subtract,
+        GL_DOT3_RGB => F::Dot3Rgb,
+        GL_DOT3_RGBA => F::Dot3Rgba,
+        _ => F::Modulate,
+    }
+}
+
+fn source(e: GLenum) -> core_env::Source {
+    use core_env::Source as S;
+    match e {
+        GL_TEXTURE => S::Texture,
+        GL_CONSTANT => S::Constant,
+        GL_PRIMARY_COLOR => S::PrimaryColor,
+        _ => S::Previous,
+    }
+}
+
+fn operand(e: GLenum) -> core_env::Operand {
+    use core_env::Operand as O;
+    match e {
+        GL_SRC_COLOR => O::SrcColor,
+        GL_ONE_MINUS_SRC_COLOR => O::OneMinusSrcColor,
+        GL_ONE_MINUS_SRC_ALPHA => O::OneMinusSrcAlpha,
+        _ => O::SrcAlpha,
+    }
+}
+
+impl TexEnvUnit {
+    /// The core's form of this environment (the enums were validated when set).
+    pub fn to_core(&self) -> core_env::TexEnv {
+        use core_env::EnvMode as M;
+        let mode = match self.mode {
+            GL_REPLACE => M::Replace,
+            GL_DECAL => M::Decal,
+            GL_BLEND => M::Blend,
+            GL_ADD => M::Add,
+            GL_COMBINE => M::Combine(core_env::Combine {
+                rgb: combine_func(self.combine_rgb),
+                alpha: combine_func(self.combine_alpha),
+                src_rgb: self.src_rgb.map(source),
+                src_alpha: self.src_alpha.map(source),
+                operand_rgb: self.operand_rgb.map(operand),
+                operand_alpha: self.operand_alpha.map(operand),
+                rgb_scale: self.rgb_scale,
+                alpha_scale: self.alpha_scale,
+            }),
+            _ => M::Modulate,
+        };
+        core_env::TexEnv {
+            mode,
+            color: self.color,
+        }
+    }
+}
+
+impl Context {
+    /// Fills the texture units (snapshots of the complete textures bound to enabled units),
+    /// fog and the point sprite enable of `rs`.
+    pub(super) fn texture_render_state(&self, rs: &mut RenderState) {
+        for u in 0..MAX_TEXTURE_UNITS {
+            rs.textures[u] = if self.enables.texture_2d[u] {
+                self.unit_sampler(u).map(|sampler| core_env::TextureUnit {
+                    sampler,
+                    env: self.texenv.units[u].to_core(),
+                    coord_replace: self.texenv.units[u].coord_replace,
+                })
+            } else {
+                None
+            };
+        }
+        rs.point_sprite = self.enables.point_sprite;
+        rs.fog = self.enables.fog.then(|| {
+            let f = &self.fog;
+            core_env::Fog {
+                mode: match f.mode {
+                    GL_LINEAR => core_env::FogMode::Linear,
+                    GL_EXP2 => core_env::FogMode::Exp2,
+                    _ => core_env::FogMode::Exp,
+                },
+                density: f.density,
+                start: f.start,
+                end: f.end,
+                color: f.color,
+                quality: match self.hints.fog {
+                    GL_FASTEST => Quality::Fastest,
+                    GL_NICEST => Quality::Nicest,
+                    _ => Quality::Balanced,
+                },
+            }
+        });
     }
 }

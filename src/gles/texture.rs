@@ -190,10 +190,22 @@ pub enum ParamKind {
 }
 
 impl Context {
-    /// Completes recorded rendering before a texture changes (ARCHITECTURE decision 5).
-    fn texture_changing(&mut self) {
-        if self.frame.as_ref().is_some_and(|f| !f.is_empty()) {
-            self.flush();
+    /// Called before a texture changes. Recorded draws hold snapshots of the images they
+    /// sample ([`Texture::sampler`]; a changed level is copied, not altered in place), so
+    /// no flush is needed: pending draws keep seeing the contents they were recorded with.
+    fn texture_changing(&mut self) {}
+
+    /// A snapshot of the texture bound to `unit` for sampling, `None` when it is incomplete
+    /// (or was deleted by another context of the share group).
+    pub(super) fn unit_sampler(
+        &self,
+        unit: usize,
+    ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
+        let name = self.textures.bound[unit];
+        if name == 0 {
+            self.textures.default.sampler()
+        } else {
+            lock_objects(&self.shared).textures.get(name)?.sampler()
         }
     }
 
@@ -306,6 +318,7 @@ impl Context {
         let wrap = |e| match e {
             GL_REPEAT => Some(Wrap::Repeat),
             GL_CLAMP_TO_EDGE => Some(Wrap::ClampToEdge),
+            GL_MIRRORED_REPEAT_OES => Some(Wrap::MirroredRepeat),
             _ => None,
         };
         let set = match pname {
@@ -384,6 +397,7 @@ impl Context {
                     e(match w {
                         Wrap::Repeat => GL_REPEAT,
                         Wrap::ClampToEdge => GL_CLAMP_TO_EDGE,
+                        Wrap::MirroredRepeat => GL_MIRRORED_REPEAT_OES,
                     })
                 }
                 GL_GENERATE_MIPMAP => e(GLenum::from(t.generate_mipmap)),

@@ -1,12 +1,14 @@
-//! Line segments (ES 1.1 §3.4). Aliased segments follow the diamond-exit rule in the form
-//! the specification's x-major/y-major description gives it: one fragment per pixel column
-//! (x-major) or row (y-major) whose center lies on the segment's half-open extent along the
-//! major axis, so the pixel at the end vertex belongs to the next segment of a strip and none
-//! is drawn twice; the fragment is the pixel the segment passes through at that center. Wide
-//! aliased segments (width rounded to an integer) replicate each fragment across the minor
-//! direction, offset so the run is centered on the segment. Antialiased segments
-//! (`GL_LINE_SMOOTH`) cover a rectangle of the line's width and length, and each fragment's
-//! alpha is multiplied by the covered share of its pixel.
+//! Line segments (ES 1.1 §3.4). Aliased segments follow the diamond-exit rule exactly: a
+//! pixel is drawn when the segment, with its endpoints perturbed by −(ε, ε²) as §3.4.1
+//! prescribes, meets the pixel's diamond and does not end inside it. Between the columns
+//! (x-major) or rows (y-major) that hold the endpoints, the segment crosses each column's
+//! center inside exactly one diamond, so those fragments follow from the segment's position
+//! there; the two end columns are decided by the literal diamond test. The end vertex's
+//! pixel thus belongs to the next segment of a strip, and none is drawn twice. Wide aliased
+//! segments (width rounded to an integer) rasterize the segment offset by −(w − 1)/2 in the
+//! minor direction and replicate each fragment w times upward (rightward). Antialiased
+//! segments (`GL_LINE_SMOOTH`) cover a rectangle of the line's width and length, and each
+//! fragment's alpha is multiplied by the covered share of its pixel.
 //!
 //! Colors and depth are interpolated with t, the projection of the pixel center onto the
 //! segment, perspective-correctly for colors and linearly for depth.
@@ -28,14 +30,16 @@ pub struct Line {
 enum Walk {
     Aliased {
         x_major: bool,
-        /// Start position along the major and minor axes, and the minor change per major
-        /// unit.
+        /// The perturbed, offset segment's start along the major and minor axes, and its
+        /// minor change per major unit.
         major0: f64,
         minor0: f64,
         slope: f64,
-        /// Major-axis pixel indices `first..last` that produce fragments.
+        /// Major-axis pixel indices `first..last` strictly between the end columns.
         first: i32,
         last: i32,
+        /// The fragments of the end columns: (major, minor) pixel indices.
+        ends: [Option<(i32, i32)>; 2],
         width: i32,
     },
     Smooth,
@@ -70,6 +74,8 @@ pub fn setup(
     }
     let along = |va: f64, vb: f64| plane_along((ax, ay), d, len2, va, vb);
     let flat = (state.shade_model == ShadeModel::Flat).then(|| provoking.color.to_array());
+    let (tex, fog) =
+        crate::core::setup::attribute_planes(state, &[a, b], &[aw, bw], &|f| along(f(0), f(1)));
     let shading = |coverage| Shading {
         origin: (0, 0),
         z: along(az, bz),
@@ -77,6 +83,8 @@ pub fn setup(
         color_w: std::array::from_fn(|c| along(a.color[c] as f64 * aw, b.color[c] as f64 * bw)),
         flat,
         coverage,
+        tex: tex.clone(),
+        fog,
     };
     let width = state.line_width.clamp(1.0, MAX_LINE_WIDTH) as f64;
     if state.line_smooth {
@@ -123,36 +131,62 @@ pub fn setup(
     }
     let width = (width.round() as i32).max(1);
     let x_major = d.0.abs() >= d.1.abs();
-    let (major0, minor0, major1) = if x_major { (ax, ay, bx) } else { (ay, ax, by) };
-    let slope = if x_major { d.1 / d.0 } else { d.0 / d.1 };
-    // Pixel centers c = i + 0.5 on the half-open extent from the start to the end vertex.
-    let (first, last) = if major1 > major0 {
-        ((major0 - 0.5).ceil(), (major1 - 0.5).ceil())
+    let off = (width - 1) as f64 * 0.5;
+    // The offset segment in (major, minor) coordinates, perturbed by −ε in x and −ε² in y.
+    // Coordinates are multiples of 2⁻⁸ below 2¹⁶, so ε = 2⁻¹⁸ and ε² = 2⁻³⁶ are represented
+    // exactly beside them and still decide every tie.
+    const EPS: f64 = 1.0 / (1u64 << 18) as f64;
+    let (em, en) = if x_major {
+        (EPS, EPS * EPS)
     } else {
-        ((major1 - 0.5).floor() + 1.0, (major0 - 0.5).floor() + 1.0)
+        (EPS * EPS, EPS)
     };
-    let clamp = |v: f64| v.clamp(-(1 << 24) as f64, (1 << 24) as f64) as i32;
-    let (first, last) = (clamp(first), clamp(last));
-    // The minor extent: every fragment lies within width/2 + 1 of the segment.
-    let pad = width / 2 + 1;
-    let (lo_m, hi_m) = (
-        minor0.min(minor0 + slope * (major1 - major0)),
-        minor0.max(minor0 + slope * (major1 - major0)),
-    );
-    let (mn0, mn1) = (clamp(lo_m.floor()) - pad, clamp(hi_m.ceil()) + pad);
+    let (pa, pb) = if x_major {
+        ((ax - em, ay - off - en), (bx - em, by - off - en))
+    } else {
+        ((ay - em, ax - off - en), (by - em, bx - off - en))
+    };
+    let slope = (pb.1 - pa.1) / (pb.0 - pa.0);
+    let clamp = |v: f64| v.clamp(-(1 << 24) as f64, (1 << 24) as f64).floor() as i32;
+    let (ca, cb) = (clamp(pa.0), clamp(pb.0));
+    let (first, last) = if pb.0 > pa.0 {
+        (ca + 1, cb)
+    } else {
+        (cb + 1, ca)
+    };
+    // The literal rule in the end columns: the segment meets the diamond of (i, j) and does
+    // not end inside it.
+    let produces = |i: i32, j: i32| {
+        let (cm, cn) = (i as f64 + 0.5, j as f64 + 0.5);
+        (pb.0 - cm).abs() + (pb.1 - cn).abs() >= 0.5 && meets_diamond(pa, pb, cm, cn)
+    };
+    let mut ends = [None; 2];
+    for (k, col) in [ca, cb].into_iter().enumerate() {
+        if k == 1 && cb == ca {
+            break;
+        }
+        let n = clamp(pa.1 + (col as f64 + 0.5 - pa.0) * slope);
+        ends[k] = (n - 1..=n + 1)
+            .find(|&j| produces(col, j))
+            .map(|j| (col, j));
+    }
+    // The minor extent: every fragment lies within width + 1 of the segment.
+    let (lo_m, hi_m) = (pa.1.min(pb.1), pa.1.max(pb.1));
+    let (mn0, mn1) = (clamp(lo_m) - 1, clamp(hi_m) + width + 2);
+    let (mj0, mj1) = (ca.min(cb), ca.max(cb) + 1);
     let bbox = if x_major {
         Rect {
-            x0: first,
+            x0: mj0,
             y0: mn0,
-            x1: last,
+            x1: mj1,
             y1: mn1,
         }
     } else {
         Rect {
             x0: mn0,
-            y0: first,
+            y0: mj0,
             x1: mn1,
-            y1: last,
+            y1: mj1,
         }
     }
     .intersect(bounds);
@@ -161,14 +195,35 @@ pub fn setup(
         shading: shading(None),
         walk: Walk::Aliased {
             x_major,
-            major0,
-            minor0,
+            major0: pa.0,
+            minor0: pa.1,
             slope,
             first,
             last,
+            ends,
             width,
         },
     })
+}
+
+/// Does the segment from `a` to `b` meet the open diamond |u − cu| + |v − cv| < ½? The
+/// distance is convex and piecewise linear along the segment, so its minimum is at an end or
+/// where either coordinate crosses the center.
+fn meets_diamond(a: (f64, f64), b: (f64, f64), cu: f64, cv: f64) -> bool {
+    let at = |t: f64| {
+        let (u, v) = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
+        (u - cu).abs() + (v - cv).abs() < 0.5
+    };
+    let mut hit = at(0.0) || at(1.0);
+    if b.0 != a.0 {
+        let t = (cu - a.0) / (b.0 - a.0);
+        hit |= (0.0..=1.0).contains(&t) && at(t);
+    }
+    if b.1 != a.1 {
+        let t = (cv - a.1) / (b.1 - a.1);
+        hit |= (0.0..=1.0).contains(&t) && at(t);
+    }
+    hit
 }
 
 impl Line {
@@ -195,18 +250,30 @@ impl Line {
                 slope,
                 first,
                 last,
+                ends,
                 width,
             } => {
-                // The first minor index of the fragments at major index i.
-                // The endpoints are perturbed by −(ε, ε²) (§3.4.1), so a segment running
-                // exactly along a pixel boundary belongs to the pixels below (left of) it.
+                // The first minor index of the fragments at major index i: where the
+                // (perturbed, offset) segment crosses the column's center.
                 let minor_at = |i: i32| {
                     let c = i as f64 + 0.5;
-                    (minor0 + (c - major0) * slope - (width - 1) as f64 * 0.5).ceil() as i32 - 1
+                    (minor0 + (c - major0) * slope).floor() as i32
                 };
+                // Only the columns whose runs can reach this band's rows (x-major): the
+                // minor position is monotonic in the major one.
+                let (first, last) = if x_major && slope != 0.0 {
+                    let major_at = |v: i32| major0 + (v as f64 - minor0) / slope;
+                    let (a, b) = (major_at(y0 - width - 1), major_at(y1 + 1));
+                    let lo = (a.min(b).floor() as i32).saturating_sub(1);
+                    let hi = (a.max(b).ceil() as i32).saturating_add(1);
+                    (first.max(lo), last.min(hi))
+                } else {
+                    (first, last)
+                };
+                let interior = (first..last).map(|i| (i, minor_at(i)));
+                let all = interior.chain(ends.into_iter().flatten());
                 if x_major {
-                    for x in first.max(b.x0)..last.min(b.x1) {
-                        let j = minor_at(x);
+                    for (x, j) in all.filter(|&(x, _)| x >= b.x0 && x < b.x1) {
                         for y in j.max(y0)..(j + width).min(y1) {
                             emit(Span {
                                 y,
@@ -216,8 +283,7 @@ impl Line {
                         }
                     }
                 } else {
-                    for y in first.max(y0)..last.min(y1) {
-                        let j = minor_at(y);
+                    for (y, j) in all.filter(|&(y, _)| y >= y0 && y < y1) {
                         let (x0, x1) = (j.max(b.x0), (j + width).min(b.x1));
                         if x0 < x1 {
                             emit(Span { y, x0, x1 });

@@ -21,9 +21,17 @@ pub struct Point {
 /// `bounds`.
 pub fn setup(state: &RenderState, v: &ClipVertex, bounds: Rect) -> Option<Point> {
     let (x, y, z, _) = window(state, v.pos)?;
-    let size = state.point_size.clamp(1.0, MAX_POINT_SIZE) as f64;
+    // The vertex stage derived the size (state or array, attenuation, min and max); here it
+    // is clamped to the supported range (NaN: 1).
+    let size = if v.point_size.is_nan() {
+        1.0
+    } else {
+        v.point_size.clamp(1.0, MAX_POINT_SIZE) as f64
+    };
     let to_i = |v: f64| v.clamp(-(1 << 24) as f64, (1 << 24) as f64) as i32;
-    let (rect, coverage) = if state.point_smooth {
+    // Sprites are squares: GL_POINT_SMOOTH does not apply to them.
+    let smooth = state.point_smooth && !state.point_sprite;
+    let (rect, coverage) = if smooth {
         let r = size * 0.5;
         let rect = Rect {
             x0: to_i((x - r).floor()),
@@ -61,6 +69,32 @@ pub fn setup(state: &RenderState, v: &ClipVertex, bounds: Rect) -> Option<Point>
         dy: 0.0,
         c,
     };
+    // A point has one of each value, so planes are constant (1/w is taken as 1). Point
+    // sprites (OES_point_sprite) replace s and t on units with COORD_REPLACE: with the
+    // fragment at pixel (x_f, y_f), s = ½ + (x_f + ½ − x_w)/size and
+    // t = ½ − (y_f + ½ − y_w)/size, (x_w, y_w) the center of the square drawn.
+    let (mut tex, fog) =
+        crate::core::setup::attribute_planes(state, &[v], &[1.0], &|f| constant(f(0)));
+    if let Some(planes) = tex.as_mut() {
+        let sprite = state.point_sprite;
+        let s = size.round().max(1.0);
+        let (cx, cy, size) = (rect.x0 as f64 + s * 0.5, rect.y0 as f64 + s * 0.5, s);
+        for (u, unit) in state.textures.iter().enumerate() {
+            if unit.as_ref().is_some_and(|u| u.coord_replace) && sprite {
+                planes[u].s = Plane {
+                    dx: 1.0 / size,
+                    dy: 0.0,
+                    c: 0.5 + (0.5 - cx) / size,
+                };
+                planes[u].t = Plane {
+                    dx: 0.0,
+                    dy: -1.0 / size,
+                    c: 0.5 - (0.5 - cy) / size,
+                };
+                planes[u].q = constant(1.0);
+            }
+        }
+    }
     (!bbox.is_empty()).then(|| Point {
         bbox,
         shading: Shading {
@@ -71,6 +105,8 @@ pub fn setup(state: &RenderState, v: &ClipVertex, bounds: Rect) -> Option<Point>
             color_w: v.color.to_array().map(|c| constant(c as f64)),
             flat: Some(v.color.to_array()),
             coverage,
+            tex,
+            fog,
         },
     })
 }

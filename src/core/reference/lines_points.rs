@@ -135,7 +135,7 @@ pub fn line(state: &RenderState, a: &Vtx, b: &Vtx, provoking: DVec4, target: &mu
     } else {
         ((ax - off, ay), (bx - off, by))
     };
-    let eps = 1e-9;
+    let eps = 1.0 / (1u64 << 18) as f64;
     let pa = (oa.0 - eps, oa.1 - eps * eps);
     let pb = (ob.0 - eps, ob.1 - eps * eps);
     let grow = Rect {

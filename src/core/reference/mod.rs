@@ -13,22 +13,29 @@ use glam::DVec4;
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
 use super::target::Target;
 use super::vertex::{DrawCall, Primitive};
+use super::TEXTURE_UNITS;
 
 mod compare;
 mod fragment;
 mod lines_points;
+mod texturing;
 pub use compare::{compare, ErrorStats};
 
 #[derive(Clone, Copy, Debug)]
 struct Vtx {
     pos: DVec4,
     color: DVec4,
+    /// Texture coordinates per unit after the texture matrix, and eye-space z (for fog).
+    tex: [DVec4; TEXTURE_UNITS],
+    eye_z: f64,
 }
 
 fn lerp(a: &Vtx, b: &Vtx, t: f64) -> Vtx {
     Vtx {
         pos: a.pos + (b.pos - a.pos) * t,
         color: a.color + (b.color - a.color) * t,
+        tex: std::array::from_fn(|u| a.tex[u] + (b.tex[u] - a.tex[u]) * t),
+        eye_z: a.eye_z + (b.eye_z - a.eye_z) * t,
     }
 }
 
@@ -86,10 +93,20 @@ pub fn measure(
 
 /// Renders `draw` into `target` the literal way.
 pub fn render(state: &RenderState, draw: &DrawCall<'_>, target: &mut Target) {
-    let mvp = state.projection.as_dmat4() * state.modelview.as_dmat4();
-    let fetch = |i: usize| Vtx {
-        pos: mvp * DVec4::from_array(draw.position.fetch(i).map(f64::from)),
-        color: DVec4::from_array(draw.color.fetch(i).map(f64::from)).clamp(DVec4::ZERO, DVec4::ONE),
+    let mv = state.modelview.as_dmat4();
+    let mvp = state.projection.as_dmat4() * mv;
+    let fetch = |i: usize| {
+        let p = DVec4::from_array(draw.position.fetch(i).map(f64::from));
+        Vtx {
+            pos: mvp * p,
+            color: DVec4::from_array(draw.color.fetch(i).map(f64::from))
+                .clamp(DVec4::ZERO, DVec4::ONE),
+            tex: std::array::from_fn(|u| {
+                state.texture_matrices[u].as_dmat4()
+                    * DVec4::from_array(draw.texcoord[u].fetch(i).map(f64::from))
+            }),
+            eye_z: (mv * p).z,
+        }
     };
     let prim = draw.primitive;
     if prim == Primitive::Points {
@@ -229,6 +246,7 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
         }
         _ => 0.0,
     };
+    let textured = state.textures.iter().any(Option::is_some) || state.fog.is_some();
     let (colors, depths, stencils) = target.buffers_mut();
     for y in bounds.y0..bounds.y1 {
         for x in bounds.x0..bounds.x1 {
@@ -255,6 +273,64 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
                     + v[1].color * (b[1] * win[1].3)
                     + v[2].color * (b[2] * win[2].3))
                     / q
+            };
+            let color = if textured {
+                // Perspective-correct interpolation at (x, y) of value·(1/w), divided by the
+                // interpolated 1/w; exact derivatives of s/q from the linear numerator and
+                // denominator at the neighbouring centers.
+                let bary = |px: f64, py: f64| {
+                    [
+                        edge(1, 2, px, py) / area,
+                        edge(2, 0, px, py) / area,
+                        edge(0, 1, px, py) / area,
+                    ]
+                };
+                let lin = |b: &[f64; 3], f: &dyn Fn(usize) -> f64| {
+                    (0..3).map(|i| b[i] * win[i].3 * f(i)).sum::<f64>()
+                };
+                let (b0, bx, by) = (bary(px, py), bary(px + 1.0, py), bary(px, py + 1.0));
+                let coords: Vec<Option<texturing::Coords>> = (0..TEXTURE_UNITS)
+                    .map(|u| {
+                        state.textures[u].as_ref()?;
+                        let ratio = |b: &[f64; 3]| {
+                            let q = lin(b, &|i| v[i].tex[u].w);
+                            (
+                                lin(b, &|i| v[i].tex[u].x) / q,
+                                lin(b, &|i| v[i].tex[u].y) / q,
+                            )
+                        };
+                        let (s, t) = ratio(&b0);
+                        // The ratio's derivative: N/D with N, D linear, exactly.
+                        let d = |bb: &[f64; 3]| {
+                            let (q0, q1) =
+                                (lin(&b0, &|i| v[i].tex[u].w), lin(bb, &|i| v[i].tex[u].w));
+                            let (n0, n1) =
+                                (lin(&b0, &|i| v[i].tex[u].x), lin(bb, &|i| v[i].tex[u].x));
+                            let (m0, m1) =
+                                (lin(&b0, &|i| v[i].tex[u].y), lin(bb, &|i| v[i].tex[u].y));
+                            let (dq, dn, dm) = (q1 - q0, n1 - n0, m1 - m0);
+                            (
+                                (dn * q0 - n0 * dq) / (q0 * q0),
+                                (dm * q0 - m0 * dq) / (q0 * q0),
+                            )
+                        };
+                        let (ds_dx, dt_dx) = d(&bx);
+                        let (ds_dy, dt_dy) = d(&by);
+                        Some(texturing::Coords {
+                            s,
+                            t,
+                            ds_dx,
+                            dt_dx,
+                            ds_dy,
+                            dt_dy,
+                        })
+                    })
+                    .collect();
+                let iw = lin(&b0, &|_| 1.0);
+                let z_eye = lin(&b0, &|i| v[i].eye_z.abs()) / iw;
+                texturing::shade(state, color, &coords, z_eye)
+            } else {
+                color
             };
             let pixel = fragment::Pixel {
                 color: &mut colors[at],

@@ -65,6 +65,8 @@ pub unsafe extern "C" fn glDrawElements(
         let size = match ty {
             GL_UNSIGNED_BYTE => 1,
             GL_UNSIGNED_SHORT => 2,
+            // OES_element_index_uint.
+            crate::gles::tokens_ext::GL_UNSIGNED_INT => 4,
             _ => return c.set_error(GL_INVALID_ENUM),
         };
         if count < 0 {
@@ -81,14 +83,22 @@ pub unsafe extern "C" fn glDrawElements(
         let n = count as usize;
         // SAFETY: the application passes `count` indices of type `ty` at `indices`.
         let bytes = unsafe { client_bytes(indices as usize, n * size) };
-        if size == 1 {
-            c.draw_elements(mode, Indices::U8(bytes));
-        } else {
-            let shorts: Vec<u16> = bytes
-                .chunks_exact(2)
-                .map(|b| u16::from_ne_bytes([b[0], b[1]]))
-                .collect();
-            c.draw_elements(mode, Indices::U16(&shorts));
+        match size {
+            1 => c.draw_elements(mode, Indices::U8(bytes)),
+            2 => {
+                let shorts: Vec<u16> = bytes
+                    .chunks_exact(2)
+                    .map(|b| u16::from_ne_bytes([b[0], b[1]]))
+                    .collect();
+                c.draw_elements(mode, Indices::U16(&shorts));
+            }
+            _ => {
+                let ints: Vec<u32> = bytes
+                    .chunks_exact(4)
+                    .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+                    .collect();
+                c.draw_elements(mode, Indices::U32(&ints));
+            }
         }
     })
 }

@@ -1,0 +1,148 @@
+//! The GL and EGL entry points the benchmark calls, resolved at run time with `dlopen` and
+//! `dlsym`, so one binary drives our library and Mesa's through the same C API.
+
+use std::ffi::{c_void, CStr, CString};
+
+use GLES_CM::egl::types::{
+    EGLBoolean, EGLConfig, EGLContext, EGLDisplay, EGLNativeDisplayType, EGLSurface, EGLenum,
+    EGLint,
+};
+use GLES_CM::gles::types::{
+    GLbitfield, GLclampf, GLenum, GLfloat, GLint, GLsizei, GLubyte, GLvoid,
+};
+
+/// A library opened with `dlopen`; closed again on drop.
+pub struct Library {
+    handle: *mut c_void,
+    name: String,
+}
+
+impl Library {
+    /// Opens `path` (a file path or a soname) with `RTLD_NOW | RTLD_LOCAL`.
+    pub fn open(path: &str) -> Result<Library, String> {
+        let c = CString::new(path).map_err(|_| format!("bad library path {path:?}"))?;
+        // SAFETY: `c` is a valid NUL-terminated string; dlopen has no other preconditions.
+        // Running the library's initializers is the point of loading it.
+        let handle = unsafe { libc::dlopen(c.as_ptr(), libc::RTLD_NOW | libc::RTLD_LOCAL) };
+        if handle.is_null() {
+            return Err(format!("dlopen {path}: {}", dl_error()));
+        }
+        Ok(Library {
+            handle,
+            name: path.to_owned(),
+        })
+    }
+
+    /// The address of `symbol`, or an error naming it.
+    pub fn symbol(&self, symbol: &str) -> Result<*mut c_void, String> {
+        let c = CString::new(symbol).map_err(|_| format!("bad symbol {symbol:?}"))?;
+        // SAFETY: `self.handle` came from a successful dlopen and stays open while `self`
+        // lives; `c` is NUL-terminated.
+        let p = unsafe { libc::dlsym(self.handle, c.as_ptr()) };
+        if p.is_null() {
+            Err(format!("{symbol} not found in {}", self.name))
+        } else {
+            Ok(p)
+        }
+    }
+}
+
+impl Drop for Library {
+    fn drop(&mut self) {
+        // SAFETY: the handle is from dlopen and is closed once. Nothing resolved from it is
+        // used after the `Api` holding this library is dropped (the `Api` owns both).
+        unsafe {
+            libc::dlclose(self.handle);
+        }
+    }
+}
+
+fn dl_error() -> String {
+    // SAFETY: dlerror returns NULL or a NUL-terminated string valid until the next dl* call
+    // on this thread; it is copied at once.
+    unsafe {
+        let e = libc::dlerror();
+        if e.is_null() {
+            "unknown error".to_owned()
+        } else {
+            CStr::from_ptr(e).to_string_lossy().into_owned()
+        }
+    }
+}
+
+macro_rules! api {
+    ($( $name:ident : fn($($arg:ty),*) $(-> $ret:ty)?; )*) => {
+        /// The entry points, as C function pointers. Calling any of them is `unsafe`: the
+        /// caller keeps the GL/EGL contracts (valid pointers, a current context for `gl*`).
+        #[allow(non_snake_case)]
+        pub struct Api {
+            $( pub $name: unsafe extern "C" fn($($arg),*) $(-> $ret)?, )*
+            // Declared last so it is dropped after the pointers (which are plain values).
+            _libs: Vec<Library>,
+        }
+
+        impl Api {
+            /// Resolves every entry point from the first of `libs` that has it.
+            #[allow(non_snake_case)]
+            pub fn load(libs: Vec<Library>) -> Result<Api, String> {
+                let find = |name: &str| -> Result<*mut c_void, String> {
+                    let mut last = String::new();
+                    for lib in &libs {
+                        match lib.symbol(name) {
+                            Ok(p) => return Ok(p),
+                            Err(e) => last = e,
+                        }
+                    }
+                    Err(last)
+                };
+                $(
+                    let p = find(stringify!($name))?;
+                    // SAFETY: `p` is the non-null address of the C function of this name,
+                    // whose prototype in the Khronos headers is the signature declared
+                    // here; fn pointers and data pointers have one size on the platforms
+                    // dlsym serves.
+                    let $name = unsafe {
+                        std::mem::transmute::<*mut c_void, unsafe extern "C" fn($($arg),*) $(-> $ret)?>(p)
+                    };
+                )*
+                Ok(Api { $( $name, )* _libs: libs })
+            }
+        }
+    };
+}
+
+api! {
+    eglGetDisplay: fn(EGLNativeDisplayType) -> EGLDisplay;
+    eglInitialize: fn(EGLDisplay, *mut EGLint, *mut EGLint) -> EGLBoolean;
+    eglBindAPI: fn(EGLenum) -> EGLBoolean;
+    eglChooseConfig: fn(EGLDisplay, *const EGLint, *mut EGLConfig, EGLint, *mut EGLint) -> EGLBoolean;
+    eglGetConfigAttrib: fn(EGLDisplay, EGLConfig, EGLint, *mut EGLint) -> EGLBoolean;
+    eglCreatePbufferSurface: fn(EGLDisplay, EGLConfig, *const EGLint) -> EGLSurface;
+    eglCreateContext: fn(EGLDisplay, EGLConfig, EGLContext, *const EGLint) -> EGLContext;
+    eglMakeCurrent: fn(EGLDisplay, EGLSurface, EGLSurface, EGLContext) -> EGLBoolean;
+    eglDestroySurface: fn(EGLDisplay, EGLSurface) -> EGLBoolean;
+    eglDestroyContext: fn(EGLDisplay, EGLContext) -> EGLBoolean;
+    eglGetError: fn() -> EGLint;
+    glGetString: fn(GLenum) -> *const GLubyte;
+    glGetError: fn() -> GLenum;
+    glViewport: fn(GLint, GLint, GLsizei, GLsizei);
+    glClearColor: fn(GLclampf, GLclampf, GLclampf, GLclampf);
+    glClearDepthf: fn(GLclampf);
+    glClear: fn(GLbitfield);
+    glEnable: fn(GLenum);
+    glDisable: fn(GLenum);
+    glDepthFunc: fn(GLenum);
+    glBlendFunc: fn(GLenum, GLenum);
+    glHint: fn(GLenum, GLenum);
+    glMatrixMode: fn(GLenum);
+    glLoadMatrixf: fn(*const GLfloat);
+    glEnableClientState: fn(GLenum);
+    glVertexPointer: fn(GLint, GLenum, GLsizei, *const GLvoid);
+    glColorPointer: fn(GLint, GLenum, GLsizei, *const GLvoid);
+    glDrawArrays: fn(GLenum, GLint, GLsizei);
+    glPointSize: fn(GLfloat);
+    glLineWidth: fn(GLfloat);
+    glPixelStorei: fn(GLenum, GLint);
+    glFinish: fn();
+    glReadPixels: fn(GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, *mut GLvoid);
+}

@@ -1,0 +1,374 @@
+//! One vertex through the vertex stage: skinning or the modelview, the projection, the
+//! normal transform (inverse transpose, rescale, normalize), lighting, texture coordinates
+//! (generated or fetched, then the texture matrix), the derived point size and the user
+//! clip distances. [`Stage::new`] derives everything that is constant over a draw call.
+
+use glam::{Mat3, Mat4, Vec3, Vec4};
+
+use super::lighting::Prepared;
+use super::{AttribArray, ClipVertex, DrawCall, Primitive};
+use crate::core::clip::MAX_USER_PLANES;
+use crate::core::state::{RenderState, TexGen};
+use crate::core::TEXTURE_UNITS;
+
+/// The matrix that takes object-space normals to eye space: the inverse transpose of the
+/// upper-left 3 × 3 of `m` (ES 1.1 §2.11.3). A singular matrix (a scale by 0, say) has no
+/// inverse; normals then pass through untransformed, so nothing becomes NaN or infinite
+/// (Mesa does the same).
+pub fn normal_matrix(m: &Mat4) -> Mat3 {
+    let m3 = Mat3::from_mat4(*m);
+    let det = m3.determinant();
+    if det == 0.0 || !det.is_finite() {
+        return Mat3::IDENTITY;
+    }
+    let n = m3.inverse().transpose();
+    if n.is_finite() {
+        n
+    } else {
+        Mat3::IDENTITY
+    }
+}
+
+/// `GL_RESCALE_NORMAL`'s factor for normal matrix `n`: 1 / the length of the third row of
+/// the inverse modelview (the third column of its transpose), which undoes a uniform scale.
+pub fn rescale_factor(n: &Mat3) -> f32 {
+    let len = n.z_axis.length();
+    if len > 0.0 && len.is_finite() {
+        1.0 / len
+    } else {
+        1.0
+    }
+}
+
+pub(super) struct Stage<'s, 'd> {
+    state: &'s RenderState,
+    draw: &'d DrawCall<'d>,
+    modelview: Mat4,
+    projection: Mat4,
+    mvp: Mat4,
+    normal: Mat3,
+    rescale: f32,
+    lighting: Option<Prepared>,
+    /// The eye-space normal is needed (lighting or texgen).
+    need_normal: bool,
+    /// Per palette matrix: it and its normal matrix.
+    palette: Option<Vec<(Mat4, Mat3)>>,
+    tex_identity: [bool; TEXTURE_UNITS],
+    points: bool,
+    attenuate: bool,
+    planes: usize,
+    two_side: bool,
+}
+
+impl<'s, 'd> Stage<'s, 'd> {
+    pub fn new(state: &'s RenderState, draw: &'d DrawCall<'d>) -> Self {
+        let normal = normal_matrix(&state.modelview);
+        let lighting = state.lighting.as_ref().map(Prepared::new);
+        let two_side = state
+            .lighting
+            .as_ref()
+            .is_some_and(|l| l.two_side && !matches!(draw.primitive, Primitive::Points))
+            && !draw.primitive.is_line();
+        Stage {
+            state,
+            draw,
+            modelview: state.modelview,
+            projection: state.projection,
+            mvp: state.projection * state.modelview,
+            normal,
+            rescale: if state.rescale_normal && !state.normalize {
+                rescale_factor(&normal)
+            } else {
+                1.0
+            },
+            need_normal: lighting.is_some() || state.texgen.iter().any(Option::is_some),
+            lighting,
+            palette: state
+                .matrix_palette
+                .as_ref()
+                .map(|p| p.iter().map(|m| (*m, normal_matrix(m))).collect()),
+            tex_identity: state.texture_matrices.map(|m| m == Mat4::IDENTITY),
+            points: draw.primitive == Primitive::Points,
+            attenuate: state.point_params.attenuation != [1.0, 0.0, 0.0],
+            planes: state.clip_planes.len().min(MAX_USER_PLANES),
+            two_side,
+        }
+    }
+
+    /// Eye-space position and (untransformed-length) eye-space normal of vertex `i`.
+    #[inline]
+    fn to_eye(&self, i: usize, p: Vec4) -> (Vec4, Vec3) {
+        let n = || Vec3::from_slice(&self.draw.normal.fetch(i)[..3]);
+        let Some(palette) = &self.palette else {
+            let ne = if self.need_normal {
+                self.normal * n() * self.rescale
+            } else {
+                Vec3::ZERO
+            };
+            return (self.modelview * p, ne);
+        };
+        let (mut eye, mut ne) = (Vec4::ZERO, Vec3::ZERO);
+        let obj_n = if self.need_normal { n() } else { Vec3::ZERO };
+        for (index, weight) in palette_terms(self.draw, i) {
+            // An index past the palette contributes nothing.
+            if let Some((m, nm)) = palette.get(index) {
+                eye += (*m * p) * weight;
+                if self.need_normal {
+                    ne += (*nm * obj_n) * weight;
+                }
+            }
+        }
+        (eye, ne)
+    }
+
+    pub fn vertex(&self, i: usize) -> ClipVertex {
+        let p = Vec4::from_array(self.draw.position.fetch(i));
+        // The clip position does not depend on lighting or texgen being on (GL's
+        // invariance rule for multi-pass rendering): always the one product with the
+        // combined matrix, except when skinning.
+        let (eye, mut normal) = self.to_eye(i, p);
+        let pos = if self.palette.is_some() {
+            self.projection * eye
+        } else {
+            self.mvp * p
+        };
+        if self.need_normal && self.state.normalize {
+            // A zero-length normal stays zero: it lights nothing but ambient and emission,
+            // and never produces NaN.
+            normal = normal.normalize_or_zero();
+        }
+        let given = Vec4::from_array(self.draw.color.fetch(i));
+        let (color, back_color) = match &self.lighting {
+            Some(l) => {
+                let front = l.shade(eye, normal, given, false);
+                let back = if self.two_side {
+                    l.shade(eye, -normal, given, true)
+                } else {
+                    front
+                };
+                (front, back)
+            }
+            None => {
+                let c = clamp01(given);
+                (c, c)
+            }
+        };
+        let tex = std::array::from_fn(|u| {
+            let tc = match self.state.texgen[u] {
+                Some(TexGen::NormalMap) => normal.extend(1.0),
+                Some(TexGen::ReflectionMap) => {
+                    let e = eye.truncate().normalize_or_zero();
+                    let n = normal.normalize_or_zero();
+                    (e - 2.0 * n * n.dot(e)).extend(1.0)
+                }
+                None => Vec4::from_array(self.draw.texcoord[u].fetch(i)),
+            };
+            if self.tex_identity[u] {
+                tc
+            } else {
+                self.state.texture_matrices[u] * tc
+            }
+        });
+        let point_size = if self.points {
+            self.point_size(i, eye)
+        } else {
+            1.0
+        };
+        let mut clip_dist = [0.0; MAX_USER_PLANES];
+        for (d, plane) in clip_dist
+            .iter_mut()
+            .zip(&self.state.clip_planes[..self.planes])
+        {
+            // Kept finite and never NaN (an infinite eye position can give either), so the
+            // clipper's interpolation parameters stay in [0, 1]; NaN counts as outside.
+            let v = plane.dot(eye);
+            *d = if v.is_nan() {
+                -f32::MAX
+            } else {
+                v.clamp(-f32::MAX, f32::MAX)
+            };
+        }
+        ClipVertex {
+            pos,
+            color,
+            back_color,
+            tex,
+            eye: eye.truncate(),
+            point_size,
+            clip_dist,
+        }
+    }
+
+    /// ES 1.1 §3.3: the size (array or state) times sqrt(1 / (a + b·d + c·d²)), d the
+    /// distance from the eye, clamped to [min, max]. A denominator that is not positive
+    /// (the coefficients may be anything) is the limit from above: the size is `max`.
+    fn point_size(&self, i: usize, eye: Vec4) -> f32 {
+        let pp = &self.state.point_params;
+        let mut size = match &self.draw.point_size {
+            Some(a) => a.fetch(i)[0],
+            None => self.state.point_size,
+        };
+        if self.attenuate {
+            let d = eye.truncate().length();
+            let [a, b, c] = pp.attenuation;
+            let denom = a + b * d + c * d * d;
+            size = if denom > 0.0 {
+                size * (1.0 / denom).sqrt()
+            } else {
+                pp.size_max
+            };
+        }
+        // NaN (from a NaN size or distance) becomes the minimum.
+        let size = size.max(pp.size_min);
+        if size.is_nan() {
+            pp.size_min
+        } else {
+            size.min(pp.size_max)
+        }
+    }
+}
+
+/// The (palette index, weight) pairs of vertex `i` (see [`DrawCall::matrix_index`]).
+fn palette_terms(draw: &DrawCall<'_>, i: usize) -> impl Iterator<Item = (usize, f32)> {
+    let units = draw.weight.map_or(1, |w| w.size.clamp(1, 4));
+    let fetch = |a: &Option<AttribArray<'_>>| a.map(|a| (a.fetch(i), a.size));
+    let (idx, weights) = (fetch(&draw.matrix_index), fetch(&draw.weight));
+    (0..units).map(move |k| {
+        let index = match idx {
+            Some((v, size)) if k < size => v[k],
+            _ => 0.0,
+        };
+        let weight = match weights {
+            Some((v, _)) => v[k],
+            None => 1.0,
+        };
+        let index = if index >= 0.0 && index.is_finite() {
+            index as usize
+        } else {
+            usize::MAX
+        };
+        (index, weight)
+    })
+}
+
+#[inline]
+fn clamp01(c: Vec4) -> Vec4 {
+    // max/min rather than clamp: NaN becomes 0 instead of propagating.
+    c.max(Vec4::ZERO).min(Vec4::ONE)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{run, AttribSource, ComponentType, Indices};
+    use super::*;
+
+    fn draw<'a>(bytes: &'a [u8], prim: Primitive, count: usize) -> DrawCall<'a> {
+        DrawCall::new(
+            prim,
+            Indices::Range { first: 0, count },
+            AttribArray {
+                data: bytes,
+                ty: ComponentType::Float,
+                size: 3,
+                stride: 12,
+                normalized: false,
+            },
+        )
+    }
+
+    fn bytes(v: &[f32]) -> Vec<u8> {
+        v.iter().flat_map(|v| v.to_ne_bytes()).collect()
+    }
+
+    #[test]
+    fn user_clip_planes_set_under_a_scaled_modelview() {
+        // The GL stores planes in eye space (transformed when set); the vertex stage
+        // measures eye positions against them.
+        let mut s = RenderState::new(8, 8);
+        s.modelview = Mat4::from_scale(Vec3::splat(2.0));
+        // Object-space plane x ≥ 1 set under scale 2 is eye-space x ≥ 2: (1, 0, 0, −1)·M⁻¹.
+        let eye_plane = s.modelview.inverse().transpose() * Vec4::new(1.0, 0.0, 0.0, -1.0);
+        s.clip_planes = vec![eye_plane];
+        let b = bytes(&[0.5, 0.0, 0.0, 1.5, 0.0, 0.0]);
+        let v = run(&s, &draw(&b, Primitive::Points, 2)).unwrap();
+        assert!(v[0].clip_dist[0] < 0.0 && v[1].clip_dist[0] > 0.0);
+        assert!(
+            (v[1].clip_dist[0] - 0.5).abs() < 1e-6,
+            "{}",
+            v[1].clip_dist[0]
+        );
+    }
+
+    #[test]
+    fn point_size_attenuation_and_clamps() {
+        let mut s = RenderState::new(8, 8);
+        s.point_size = 8.0;
+        s.point_params.attenuation = [0.0, 0.0, 1.0];
+        let b = bytes(&[0.0, 0.0, -2.0, 0.0, 0.0, -0.1, 0.0, 0.0, 0.0]);
+        let v = run(&s, &draw(&b, Primitive::Points, 3)).unwrap();
+        assert_eq!(v[0].point_size, 4.0, "8 · sqrt(1 / 2²)");
+        assert_eq!(v[1].point_size, s.point_params.size_max, "clamped to max");
+        assert_eq!(v[2].point_size, s.point_params.size_max, "zero denominator");
+        s.point_params.size_min = 5.0;
+        let v = run(&s, &draw(&b, Primitive::Points, 3)).unwrap();
+        assert_eq!(v[0].point_size, 5.0, "clamped to min");
+    }
+
+    #[test]
+    fn texture_matrix_applies_to_texcoords_with_q() {
+        let mut s = RenderState::new(8, 8);
+        s.texture_matrices[1] = Mat4::from_scale(Vec3::new(2.0, 3.0, 1.0));
+        let b = bytes(&[0.0; 3]);
+        let mut d = draw(&b, Primitive::Triangles, 1);
+        d.texcoord[1] = AttribSource::Constant([0.5, 0.5, 0.0, 2.0]);
+        let v = run(&s, &d).unwrap();
+        assert_eq!(v[0].tex[1], Vec4::new(1.0, 1.5, 0.0, 2.0));
+        assert_eq!(v[0].tex[0], Vec4::new(0.0, 0.0, 0.0, 1.0));
+    }
+
+    #[test]
+    fn matrix_palette_blends_weighted_matrices() {
+        let mut s = RenderState::new(8, 8);
+        s.matrix_palette = Some(vec![
+            Mat4::from_translation(Vec3::new(2.0, 0.0, 0.0)),
+            Mat4::from_translation(Vec3::new(0.0, 4.0, 0.0)),
+        ]);
+        let b = bytes(&[0.0; 3]);
+        let idx = [0u8, 1, 1, 7];
+        let w = bytes(&[0.25, 0.75, 1.0, 1.0]);
+        let mut d = draw(&b, Primitive::Triangles, 2);
+        d.matrix_index = Some(AttribArray {
+            data: &idx,
+            ty: ComponentType::UnsignedByte,
+            size: 2,
+            stride: 2,
+            normalized: false,
+        });
+        d.weight = Some(AttribArray {
+            data: &w,
+            ty: ComponentType::Float,
+            size: 2,
+            stride: 8,
+            normalized: false,
+        });
+        d.position.stride = 0;
+        let v = run(&s, &d).unwrap();
+        assert_eq!(v[0].eye, Vec3::new(0.5, 3.0, 0.0));
+        // Index 7 is past the palette: it contributes nothing.
+        assert_eq!(v[1].eye, Vec3::new(0.0, 4.0, 0.0));
+    }
+
+    #[test]
+    fn sparse_indices_transform_only_what_they_use() {
+        let s = RenderState::new(8, 8);
+        let mut b = vec![0u8; 12 * 70000];
+        b[12 * 65535..12 * 65535 + 4].copy_from_slice(&7f32.to_ne_bytes());
+        let mut d = draw(&b, Primitive::Points, 0);
+        let ix = [3u16, 65535, 3];
+        d.indices = Indices::U16(&ix);
+        let v = run(&s, &d).unwrap();
+        assert_eq!(v.list.len(), 2);
+        assert_eq!(v[65535].pos.x, 7.0);
+        assert_eq!(v[3].pos.x, 0.0);
+    }
+}

@@ -1,0 +1,1206 @@
+//! `Graphics3D`: binds a target and renders scene graphs and submeshes into it through the
+//! core (ARCHITECTURE decision 7): each submesh becomes a `core::RenderState` plus a
+//! `core::DrawCall`, recorded into a `core::Frame` and flushed into the `core::Target`.
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::rc::Rc;
+
+use glam::{Mat3, Mat4, Vec3, Vec4};
+
+use crate::core::state::{AlphaTest, Blend, BlendFactor};
+use crate::core::{
+    self, AttribArray, AttribSource, ColorFormat, CompareFunc, CullFace, DepthFormat, DrawCall,
+    Frame, Indices, Primitive, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport,
+    Winding,
+};
+
+use super::appearance::{
+    Appearance, Background, CompositingMode, MaterialData, PolygonMode, MAX_TEXTURE_DIMENSION,
+};
+use super::error::{iae, ioobe, ise, Result};
+use super::image::Image2D;
+use super::mesh::{Mesh, Sprite3D, MAX_SPRITE_CROP_DIMENSION};
+use super::node::{local, node_data, root_of, to_ancestor, NodeExt, World};
+use super::nodes::{Camera, Light};
+use super::object::{Handle, Kind, ObjRef};
+use super::transform::{invert, Transform};
+use super::vertex::{IndexBuffer, VertexBuffer, NUM_TEXTURE_UNITS};
+
+/// The largest viewport and target width and height.
+pub const MAX_VIEWPORT_DIMENSION: i32 = core::MAX_VIEWPORT_DIM as i32;
+/// The most lights that affect one submesh (`maxLights`).
+pub const MAX_LIGHTS: usize = 8;
+
+/// A value of [`Graphics3D::get_properties`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Property {
+    /// A `java.lang.Boolean`.
+    Bool(bool),
+    /// A `java.lang.Integer`.
+    Int(i32),
+}
+
+struct Bound {
+    target: Target,
+    frame: Frame,
+    image: Option<Image2D>,
+    depth: bool,
+    hints: i32,
+}
+
+/// A light as rendering uses it, in eye coordinates.
+#[derive(Clone, Copy, Debug)]
+struct EyeLight {
+    mode: i32,
+    color: Vec3,
+    position: Vec3,
+    /// Directional: the direction towards the light. Spot: the direction it points.
+    direction: Vec3,
+    attenuation: [f32; 3],
+    cos_cutoff: f32,
+    exponent: f32,
+    scope: i32,
+}
+
+/// One thing to draw, found in a scene graph.
+struct Item {
+    layer: i32,
+    blended: bool,
+    what: What,
+    model: Mat4,
+    alpha: f32,
+    scope: i32,
+}
+
+enum What {
+    Submesh(VertexBuffer, IndexBuffer, Appearance),
+    Sprite(Sprite3D, Appearance),
+}
+
+/// `Graphics3D`: the render context.
+///
+/// | Java | Rust |
+/// |---|---|
+/// | `getInstance()` | [`get_instance`](Self::get_instance) (one per thread) or [`new`](Self::new) |
+/// | `bindTarget(Image2D[, depth, hints])` | [`bind_image`](Self::bind_image) |
+/// | `bindTarget(Graphics …)` | [`bind_target`](Self::bind_target) with a `core::Target` |
+/// | `releaseTarget()` | [`release_target`](Self::release_target) |
+/// | `getTarget()` | [`target_image`](Self::target_image), [`target`](Self::target) |
+/// | `getHints()` / `isDepthBufferEnabled()` | [`hints`](Self::hints) / [`is_depth_buffer_enabled`](Self::is_depth_buffer_enabled) |
+/// | `setViewport` / `getViewportX/Y/Width/Height` | [`set_viewport`](Self::set_viewport) / [`viewport`](Self::viewport) |
+/// | `setDepthRange` / `getDepthRangeNear/Far` | [`set_depth_range`](Self::set_depth_range) / [`depth_range`](Self::depth_range) |
+/// | `clear(Background)` | [`clear`](Self::clear) |
+/// | `render(World)` | [`render_world`](Self::render_world) |
+/// | `render(Node, Transform)` | [`render_node`](Self::render_node) |
+/// | `render(VertexBuffer, IndexBuffer, Appearance, Transform[, scope])` | [`render_submesh`](Self::render_submesh) |
+/// | `setCamera` / `getCamera` | [`set_camera`](Self::set_camera) / [`camera`](Self::camera) |
+/// | `addLight` / `setLight` / `resetLights` / `getLightCount` / `getLight` | [`add_light`](Self::add_light) / [`set_light`](Self::set_light) / [`reset_lights`](Self::reset_lights) / [`light_count`](Self::light_count) / [`light`](Self::light) |
+/// | `getProperties()` | [`get_properties`](Self::get_properties) |
+pub struct Graphics3D {
+    bound: Option<Bound>,
+    viewport: [i32; 4],
+    depth_range: [f32; 2],
+    camera: Option<(Camera, Mat4)>,
+    lights: Vec<Option<(Light, Mat4)>>,
+}
+
+impl Default for Graphics3D {
+    fn default() -> Self {
+        Graphics3D::new()
+    }
+}
+
+thread_local! {
+    static INSTANCE: Rc<RefCell<Graphics3D>> = Rc::new(RefCell::new(Graphics3D::new()));
+}
+
+impl Graphics3D {
+    /// Antialiasing hint.
+    pub const ANTIALIAS: i32 = 2;
+    /// Dithering hint.
+    pub const DITHER: i32 = 4;
+    /// High-precision color hint.
+    pub const TRUE_COLOR: i32 = 8;
+    /// The target's previous contents need not be kept.
+    pub const OVERWRITE: i32 = 16;
+
+    /// A new, unbound context: depth range [0, 1], no camera, no lights.
+    pub fn new() -> Graphics3D {
+        Graphics3D {
+            bound: None,
+            viewport: [0, 0, 0, 0],
+            depth_range: [0.0, 1.0],
+            camera: None,
+            lights: Vec::new(),
+        }
+    }
+
+    /// `getInstance()`: the same context every time (per thread: M3G objects are not `Send`).
+    pub fn get_instance() -> Rc<RefCell<Graphics3D>> {
+        INSTANCE.with(|i| i.clone())
+    }
+
+    fn check_bind(&self, w: u32, h: u32, hints: i32) -> Result<()> {
+        if self.bound.is_some() {
+            return ise("a target is already bound");
+        }
+        if w as i64 > MAX_VIEWPORT_DIMENSION as i64 || h as i64 > MAX_VIEWPORT_DIMENSION as i64 {
+            return iae("target larger than the maximum viewport");
+        }
+        if hints & !0x1E != 0 {
+            return iae("invalid hints");
+        }
+        Ok(())
+    }
+
+    fn bind(&mut self, target: Target, image: Option<Image2D>, depth: bool, hints: i32) {
+        let (w, h) = (target.width(), target.height());
+        self.viewport = [0, 0, w as i32, h as i32];
+        self.bound = Some(Bound {
+            frame: Frame::new(w, h, target.format()),
+            depth: depth && target.format().depth.is_some(),
+            target,
+            image,
+            hints,
+        });
+    }
+
+    /// `bindTarget(image, depthBuffer, hints)` (`bindTarget(image)` is `(image, true, 0)`).
+    /// IllegalState if a target is bound (here or, for this image, anywhere);
+    /// IllegalArgument for an immutable image, a format other than RGB and RGBA, an image
+    /// larger than the maximum viewport, or hints outside ANTIALIAS | DITHER | TRUE_COLOR |
+    /// OVERWRITE. The viewport becomes the whole image.
+    pub fn bind_image(&mut self, image: &Image2D, depth_buffer: bool, hints: i32) -> Result<()> {
+        let d = image.d();
+        if d.bound {
+            return ise("the image is already bound to a Graphics3D");
+        }
+        if !d.mutable {
+            return iae("the target image is immutable");
+        }
+        let color = match d.format {
+            Image2D::RGB => ColorFormat::Rgb888,
+            Image2D::RGBA => ColorFormat::Rgba8888,
+            _ => return iae("the target image must be RGB or RGBA"),
+        };
+        self.check_bind(d.width as u32, d.height as u32, hints)?;
+        let (w, h) = (d.width as u32, d.height as u32);
+        let mut target = Target::new(
+            w,
+            h,
+            TargetFormat {
+                color,
+                depth: Some(DepthFormat::D24),
+                stencil_bits: 0,
+            },
+        );
+        let b = if color == ColorFormat::Rgb888 { 3 } else { 4 };
+        for y in 0..h as usize {
+            for x in 0..w as usize {
+                let p = &d.pixels[(y * w as usize + x) * b..][..b];
+                let a = if b == 4 { p[3] } else { 255 };
+                target.color_mut()[(h as usize - 1 - y) * w as usize + x] =
+                    u32::from_le_bytes([p[0], p[1], p[2], a]);
+            }
+        }
+        drop(d);
+        image.dm().bound = true;
+        self.bind(target, Some(image.clone()), depth_buffer, hints);
+        Ok(())
+    }
+
+    /// `bindTarget` for a `core::Target` (what an EGL surface owns; its row 0 is the bottom
+    /// row, so M3G's top-left origin is its top row). The target is moved in and given back
+    /// by [`release_target`](Self::release_target). The depth buffer is used only if the
+    /// target has one and `depth_buffer` is true.
+    pub fn bind_target(&mut self, target: Target, depth_buffer: bool, hints: i32) -> Result<()> {
+        self.check_bind(target.width(), target.height(), hints)?;
+        self.bind(target, None, depth_buffer, hints);
+        Ok(())
+    }
+
+    /// `releaseTarget()`: finishes rendering and unbinds. An Image2D target receives the
+    /// pixels; a `core::Target` is returned. Nothing bound: nothing happens.
+    pub fn release_target(&mut self) -> Option<Target> {
+        let mut b = self.bound.take()?;
+        b.frame.flush(&mut b.target, core::bin::thread_count());
+        match b.image {
+            Some(img) => {
+                let mut d = img.dm();
+                d.bound = false;
+                let (w, h) = (d.width as usize, d.height as usize);
+                let bpp = if d.format == Image2D::RGB { 3 } else { 4 };
+                for y in 0..h {
+                    for x in 0..w {
+                        let px = b.target.color()[(h - 1 - y) * w + x].to_le_bytes();
+                        d.pixels[(y * w + x) * bpp..][..bpp].copy_from_slice(&px[..bpp]);
+                    }
+                }
+                None
+            }
+            None => Some(b.target),
+        }
+    }
+
+    /// `getTarget()` for an Image2D target.
+    pub fn target_image(&self) -> Option<Image2D> {
+        self.bound.as_ref().and_then(|b| b.image.clone())
+    }
+
+    /// The bound `core::Target` with every pending pixel written (for any kind of target).
+    pub fn target(&mut self) -> Option<&Target> {
+        let b = self.bound.as_mut()?;
+        b.frame.flush(&mut b.target, core::bin::thread_count());
+        Some(&b.target)
+    }
+
+    /// `getHints()`: as given to the bind call (0 when unbound).
+    pub fn hints(&self) -> i32 {
+        self.bound.as_ref().map_or(0, |b| b.hints)
+    }
+
+    /// `isDepthBufferEnabled()` (false when unbound).
+    pub fn is_depth_buffer_enabled(&self) -> bool {
+        self.bound.as_ref().is_some_and(|b| b.depth)
+    }
+
+    /// `setViewport(x, y, width, height)`: top-left origin; x and y may be anything.
+    /// IllegalArgument for a size ≤ 0 or above the maximum.
+    pub fn set_viewport(&mut self, x: i32, y: i32, width: i32, height: i32) -> Result<()> {
+        if width <= 0
+            || height <= 0
+            || width > MAX_VIEWPORT_DIMENSION
+            || height > MAX_VIEWPORT_DIMENSION
+        {
+            return iae("invalid viewport size");
+        }
+        self.viewport = [x, y, width, height];
+        Ok(())
+    }
+
+    /// `getViewportX/Y/Width/Height()`: [x, y, width, height].
+    pub fn viewport(&self) -> [i32; 4] {
+        self.viewport
+    }
+
+    /// `setDepthRange(near, far)`: IllegalArgument unless both are in [0, 1]; near > far is
+    /// allowed.
+    pub fn set_depth_range(&mut self, near: f32, far: f32) -> Result<()> {
+        if !(0.0..=1.0).contains(&near) || !(0.0..=1.0).contains(&far) {
+            return iae("depth range must be in [0, 1]");
+        }
+        self.depth_range = [near, far];
+        Ok(())
+    }
+
+    /// `getDepthRangeNear/Far()`: [near, far].
+    pub fn depth_range(&self) -> [f32; 2] {
+        self.depth_range
+    }
+
+    /// `setCamera(camera, transform)`: the camera-to-world transform is copied (`None` =
+    /// identity). Arithmetic if it is not invertible.
+    pub fn set_camera(&mut self, camera: Option<&Camera>, t: Option<&Transform>) -> Result<()> {
+        let m = t.map_or(Mat4::IDENTITY, |t| t.m);
+        invert(&m)?;
+        self.camera = camera.map(|c| (c.clone(), m));
+        Ok(())
+    }
+
+    /// `getCamera(transform)`: the camera and its camera-to-world transform.
+    pub fn camera(&self) -> Option<(Camera, Transform)> {
+        self.camera
+            .as_ref()
+            .map(|(c, m)| (c.clone(), Transform::from_mat4(*m)))
+    }
+
+    /// `addLight(light, transform)`: appends the light with its light-to-world transform
+    /// (`None` = identity) and returns its index.
+    pub fn add_light(&mut self, light: &Light, t: Option<&Transform>) -> i32 {
+        self.lights
+            .push(Some((light.clone(), t.map_or(Mat4::IDENTITY, |t| t.m))));
+        self.lights.len() as i32 - 1
+    }
+
+    /// `setLight(index, light, transform)`: `None` empties the slot. IndexOutOfBounds for a
+    /// bad index.
+    pub fn set_light(
+        &mut self,
+        index: i32,
+        light: Option<&Light>,
+        t: Option<&Transform>,
+    ) -> Result<()> {
+        if index < 0 || index as usize >= self.lights.len() {
+            return ioobe("light index");
+        }
+        self.lights[index as usize] = light.map(|l| (l.clone(), t.map_or(Mat4::IDENTITY, |t| t.m)));
+        Ok(())
+    }
+
+    /// `resetLights()`.
+    pub fn reset_lights(&mut self) {
+        self.lights.clear();
+    }
+
+    /// `getLightCount()`: including empty slots.
+    pub fn light_count(&self) -> i32 {
+        self.lights.len() as i32
+    }
+
+    /// `getLight(index, transform)`: the light and its transform, `None` for an empty slot.
+    /// IndexOutOfBounds for a bad index.
+    pub fn light(&self, index: i32) -> Result<Option<(Light, Transform)>> {
+        if index < 0 || index as usize >= self.lights.len() {
+            return ioobe("light index");
+        }
+        Ok(self.lights[index as usize]
+            .as_ref()
+            .map(|(l, m)| (l.clone(), Transform::from_mat4(*m))))
+    }
+
+    /// `getProperties()`: the implementation's capabilities.
+    pub fn get_properties() -> HashMap<&'static str, Property> {
+        use Property::{Bool, Int};
+        HashMap::from([
+            ("supportAntialiasing", Bool(false)),
+            ("supportTrueColor", Bool(false)),
+            ("supportDithering", Bool(true)),
+            ("supportMipmapping", Bool(false)),
+            ("supportPerspectiveCorrection", Bool(true)),
+            ("supportLocalCameraLighting", Bool(false)),
+            ("maxLights", Int(MAX_LIGHTS as i32)),
+            ("maxViewportWidth", Int(MAX_VIEWPORT_DIMENSION)),
+            ("maxViewportHeight", Int(MAX_VIEWPORT_DIMENSION)),
+            ("maxViewportDimension", Int(MAX_VIEWPORT_DIMENSION)),
+            ("maxTextureDimension", Int(MAX_TEXTURE_DIMENSION)),
+            ("maxSpriteCropDimension", Int(MAX_SPRITE_CROP_DIMENSION)),
+            ("maxTransformsPerVertex", Int(2)),
+            ("numTextureUnits", Int(NUM_TEXTURE_UNITS as i32)),
+        ])
+    }
+
+    // ----------------------------------------------------------------------------------
+    // Clearing
+
+    fn bound_mut(&mut self) -> Result<&mut Bound> {
+        match self.bound.as_mut() {
+            Some(b) => Ok(b),
+            None => ise("no target is bound"),
+        }
+    }
+
+    /// The viewport ∩ target rectangle in the core's bottom-up rows.
+    fn clear_rect(&self) -> Rect {
+        let b = self.bound.as_ref().unwrap();
+        let th = b.target.height() as i32;
+        let [x, y, w, h] = self.viewport;
+        Rect::new(x, th - y - h, w, h).intersect(b.target.bounds())
+    }
+
+    fn bg_format_ok(&self, bg: Option<&Background>) -> bool {
+        let b = self.bound.as_ref().unwrap();
+        let want = if b.target.format().color == ColorFormat::Rgba8888 {
+            Image2D::RGBA
+        } else {
+            Image2D::RGB
+        };
+        bg.and_then(|bg| bg.image())
+            .is_none_or(|i| i.format() == want)
+    }
+
+    /// `clear(background)`: clears viewport ∩ target as `background` says (`None`: color
+    /// transparent black and depth). IllegalState without a target; IllegalArgument if the
+    /// background image's format differs from the target's.
+    pub fn clear(&mut self, background: Option<&Background>) -> Result<()> {
+        self.bound_mut()?;
+        if !self.bg_format_ok(background) {
+            return iae("background image format differs from the target's");
+        }
+        self.do_clear(background);
+        self.flush();
+        Ok(())
+    }
+
+    fn do_clear(&mut self, background: Option<&Background>) {
+        let rect = self.clear_rect();
+        let [vx, vy, vw, vh] = self.viewport;
+        let b = self.bound.as_mut().unwrap();
+        let (color_clear, depth_clear, argb, image, modes, crop) = match background {
+            Some(bg) => {
+                let d = bg.d();
+                (
+                    d.color_clear,
+                    d.depth_clear,
+                    d.color,
+                    d.image.clone(),
+                    d.mode,
+                    d.crop,
+                )
+            }
+            None => (true, true, 0, None, [0; 2], [0; 4]),
+        };
+        let format = b.target.format();
+        let bg_rgba = argb_to_rgba(argb);
+        if color_clear {
+            match image.filter(|_| crop[2] > 0 && crop[3] > 0) {
+                None => b.frame.clear_color(rect, format.color.encode(bg_rgba), 0),
+                Some(img) => {
+                    b.frame.flush(&mut b.target, core::bin::thread_count());
+                    let d = img.d();
+                    let th = b.target.height() as i32;
+                    let tw = b.target.width() as usize;
+                    let pick = |v: i32, n: i32, mode: i32| -> Option<i32> {
+                        if (0..n).contains(&v) {
+                            Some(v)
+                        } else if mode == Background::REPEAT {
+                            Some(v.rem_euclid(n))
+                        } else {
+                            None
+                        }
+                    };
+                    for gy in rect.y0..rect.y1 {
+                        let py = th - 1 - gy; // M3G row
+                        let v = crop[1]
+                            + (((py - vy) as f64 + 0.5) * crop[3] as f64 / vh as f64).floor()
+                                as i32;
+                        for px in rect.x0..rect.x1 {
+                            let u = crop[0]
+                                + (((px - vx) as f64 + 0.5) * crop[2] as f64 / vw as f64).floor()
+                                    as i32;
+                            let c = match (pick(u, d.width, modes[0]), pick(v, d.height, modes[1]))
+                            {
+                                (Some(x), Some(y)) => d.rgba(x, y),
+                                _ => bg_rgba,
+                            };
+                            b.target.color_mut()[gy as usize * tw + px as usize] =
+                                format.color.encode(c);
+                        }
+                    }
+                }
+            }
+        }
+        if depth_clear && b.depth {
+            if let Some(f) = format.depth {
+                b.frame.clear_depth(rect, f.max());
+            }
+        }
+    }
+
+    fn flush(&mut self) {
+        if let Some(b) = self.bound.as_mut() {
+            b.frame.flush(&mut b.target, core::bin::thread_count());
+        }
+    }
+
+    // ----------------------------------------------------------------------------------
+    // Rendering
+
+    /// `render(world)`: clears with the World's background, makes its active camera and its
+    /// enabled lights the current ones (replacing the immediate-mode camera and lights) and
+    /// draws every enabled, in-scope mesh and sprite, layer by layer, opaque before blended.
+    /// IllegalState without a target, without an active camera in the world, for a
+    /// background image of the wrong format, or invalid mesh data; Arithmetic if the
+    /// camera's transform to the world is singular.
+    pub fn render_world(&mut self, world: &World) -> Result<()> {
+        self.bound_mut()?;
+        let Some(camera) = world.active_camera() else {
+            return ise("the world has no active camera");
+        };
+        if !Rc::ptr_eq(&root_of(&camera.0), &world.0) {
+            return ise("the active camera is not in the world");
+        }
+        let bg = world.background();
+        if !self.bg_format_ok(bg.as_ref()) {
+            return ise("background image format differs from the target's");
+        }
+        let cam_to_world = to_ancestor(&camera.0, &world.0);
+        invert(&cam_to_world)?;
+        self.camera = Some((camera.clone(), cam_to_world));
+        self.lights.clear();
+        let mut lights = Vec::new();
+        collect_lights(&world.0, &world.0, true, &mut lights);
+        self.lights = lights.into_iter().map(Some).collect();
+        self.do_clear(bg.as_ref());
+        let children = world.0.borrow().group().unwrap().children.clone();
+        let mut items = Vec::new();
+        let scope = node_data(&camera.0).scope;
+        if camera.projection_matrix().is_some() {
+            for c in &children {
+                collect(c, Mat4::IDENTITY, 1.0, scope, &mut items)?;
+            }
+        }
+        let r = self.draw_items(items);
+        self.flush();
+        r
+    }
+
+    /// `render(node, transform)`: draws a Mesh, Sprite3D or Group (a World counts as a
+    /// Group) with `transform` as its node-to-world transform (`None` = identity), ignoring
+    /// the node's own transform and ancestors, with the current camera and lights. It does not
+    /// clear. IllegalArgument for a Camera or Light; IllegalState without a target or camera,
+    /// or for invalid mesh data.
+    pub fn render_node<N: NodeExt>(&mut self, node: &N, t: Option<&Transform>) -> Result<()> {
+        if matches!(node.raw().borrow().kind, Kind::Camera(_) | Kind::Light(_)) {
+            return iae("cannot render a Camera or Light");
+        }
+        self.bound_mut()?;
+        let Some((camera, _)) = self.camera.clone() else {
+            return ise("no camera");
+        };
+        let m = t.map_or(Mat4::IDENTITY, |t| t.m);
+        let mut items = Vec::new();
+        if camera.projection_matrix().is_some() {
+            collect_at(node.raw(), m, 1.0, node_data(&camera.0).scope, &mut items)?;
+        }
+        let r = self.draw_items(items);
+        self.flush();
+        r
+    }
+
+    /// `render(vertices, triangles, appearance, transform, scope)` (use scope −1 for the
+    /// 4-argument form): draws one submesh if `scope` shares a bit with the camera's.
+    /// IllegalState without a target or camera, or for invalid data.
+    pub fn render_submesh(
+        &mut self,
+        vb: &VertexBuffer,
+        ib: &IndexBuffer,
+        app: &Appearance,
+        t: Option<&Transform>,
+        scope: i32,
+    ) -> Result<()> {
+        self.bound_mut()?;
+        let Some((camera, _)) = self.camera.clone() else {
+            return ise("no camera");
+        };
+        if camera.projection_matrix().is_none() || node_data(&camera.0).scope & scope == 0 {
+            return Ok(());
+        }
+        validate(vb, ib)?;
+        let item = Item {
+            layer: app.layer(),
+            blended: is_blended(app),
+            what: What::Submesh(vb.clone(), ib.clone(), app.clone()),
+            model: t.map_or(Mat4::IDENTITY, |t| t.m),
+            alpha: 1.0,
+            scope,
+        };
+        let r = self.draw_items(vec![item]);
+        self.flush();
+        r
+    }
+
+    fn draw_items(&mut self, mut items: Vec<Item>) -> Result<()> {
+        let Some((camera, cam_to_world)) = self.camera.clone() else {
+            return ise("no camera");
+        };
+        let Some(projection) = camera.projection_matrix() else {
+            return Ok(());
+        };
+        let view = invert(&cam_to_world)?;
+        let lights = self.eye_lights(&view);
+        items.sort_by_key(|i| (i.layer, i.blended));
+        let base = self.base_state(projection);
+        let b = self.bound.as_mut().unwrap();
+        for item in &items {
+            let mut s = base.clone();
+            match &item.what {
+                What::Submesh(vb, ib, app) => {
+                    s.modelview = view * item.model;
+                    draw_submesh(&mut s, b, vb, ib, app, item, &lights);
+                }
+                What::Sprite(sprite, app) => {
+                    draw_sprite(&s, b, sprite, app, view * item.model, item.alpha);
+                }
+            }
+            if b.frame.is_full() {
+                b.frame.flush(&mut b.target, core::bin::thread_count());
+            }
+        }
+        Ok(())
+    }
+
+    fn eye_lights(&self, view: &Mat4) -> Vec<EyeLight> {
+        let mut out = Vec::new();
+        for (light, m) in self.lights.iter().flatten() {
+            let nd = node_data(&light.0);
+            if !nd.rendering {
+                continue;
+            }
+            let d = light.d();
+            let mv = *view * *m;
+            let rgb = argb_to_rgba(d.color);
+            out.push(EyeLight {
+                mode: d.mode,
+                color: Vec3::new(rgb[0], rgb[1], rgb[2]) * d.intensity,
+                position: (mv * Vec4::new(0.0, 0.0, 0.0, 1.0)).truncate(),
+                direction: if d.mode == Light::DIRECTIONAL {
+                    (mv * Vec4::Z).truncate().normalize_or_zero()
+                } else {
+                    (mv * Vec4::NEG_Z).truncate().normalize_or_zero()
+                },
+                attenuation: d.attenuation,
+                cos_cutoff: d.spot_angle.to_radians().cos(),
+                exponent: d.spot_exponent,
+                scope: nd.scope,
+            });
+        }
+        out
+    }
+
+    fn base_state(&self, projection: Mat4) -> RenderState {
+        let b = self.bound.as_ref().unwrap();
+        let (tw, th) = (b.target.width() as i32, b.target.height() as i32);
+        let [x, y, w, h] = self.viewport;
+        let mut s = RenderState::new(tw, th);
+        s.projection = projection;
+        s.viewport = Viewport {
+            x,
+            y: th - y - h,
+            width: w,
+            height: h,
+        };
+        s.scissor = Some(self.clear_rect());
+        s.depth_range = self.depth_range;
+        s.dither = b.hints & Graphics3D::DITHER != 0;
+        s
+    }
+}
+
+fn argb_to_rgba(c: u32) -> [f32; 4] {
+    let f = |s: u32| ((c >> s) & 0xFF) as f32 / 255.0;
+    [f(16), f(8), f(0), f(24)]
+}
+
+fn collect_lights(r: &ObjRef, world: &ObjRef, enabled: bool, out: &mut Vec<(Light, Mat4)>) {
+    let (enabled, children, is_light) = {
+        let i = r.borrow();
+        let e = enabled && i.node.as_ref().is_some_and(|n| n.rendering);
+        (
+            e,
+            i.group().map(|g| g.children.clone()).unwrap_or_default(),
+            matches!(i.kind, Kind::Light(_)),
+        )
+    };
+    if !enabled {
+        return;
+    }
+    if is_light {
+        out.push((Light(r.clone()), to_ancestor(r, world)));
+    }
+    for c in &children {
+        collect_lights(c, world, true, out);
+    }
+}
+
+fn is_blended(app: &Appearance) -> bool {
+    app.compositing_mode()
+        .is_some_and(|c| c.blending() != CompositingMode::REPLACE)
+}
+
+/// The deferred checks of a submesh: positions present, indices inside the buffer.
+fn validate(vb: &VertexBuffer, ib: &IndexBuffer) -> Result<()> {
+    let d = vb.d();
+    if d.positions.is_none() {
+        return ise("the vertex buffer has no positions");
+    }
+    let n = d.vertex_count();
+    if ib.d().triangles.iter().any(|&i| i as i32 >= n) {
+        return ise("an index is past the vertex count");
+    }
+    Ok(())
+}
+
+/// Collects the drawable items of `r` (whose parent's world transform is `parent`).
+fn collect(r: &ObjRef, parent: Mat4, alpha: f32, scope: i32, out: &mut Vec<Item>) -> Result<()> {
+    let m = parent * local(r);
+    collect_at(r, m, alpha, scope, out)
+}
+
+/// Collects `r` with `m` as its own node-to-world transform.
+fn collect_at(r: &ObjRef, m: Mat4, alpha: f32, cam_scope: i32, out: &mut Vec<Item>) -> Result<()> {
+    let (rendering, a, scope) = {
+        let n = node_data(r);
+        (n.rendering, n.alpha, n.scope)
+    };
+    if !rendering {
+        return Ok(());
+    }
+    let alpha = alpha * a;
+    let kind_children = r.borrow().group().map(|g| g.children.clone());
+    if let Some(children) = kind_children {
+        for c in &children {
+            collect(c, m, alpha, cam_scope, out)?;
+        }
+        return Ok(());
+    }
+    if scope & cam_scope == 0 {
+        return Ok(());
+    }
+    if let Some(mesh) = Mesh::accepts(&r.borrow()).then(|| Mesh(r.clone())) {
+        let d = mesh.d();
+        for (ib, app) in d.ibs.iter().zip(&d.apps) {
+            let Some(app) = app else { continue };
+            validate(&d.vb, ib)?;
+            out.push(Item {
+                layer: app.layer(),
+                blended: is_blended(app),
+                what: What::Submesh(d.vb.clone(), ib.clone(), app.clone()),
+                model: m,
+                alpha,
+                scope,
+            });
+        }
+    } else if let Some(sprite) = Sprite3D::accepts(&r.borrow()).then(|| Sprite3D(r.clone())) {
+        if let Some(app) = sprite.appearance() {
+            out.push(Item {
+                layer: app.layer(),
+                blended: is_blended(&app),
+                what: What::Sprite(sprite.clone(), app),
+                model: m,
+                alpha,
+                scope,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Applies a CompositingMode (or its defaults) to `s`.
+fn apply_compositing(s: &mut RenderState, cm: Option<&CompositingMode>, depth: bool) {
+    let d = cm.map(|c| c.d().clone());
+    let (blending, threshold, offset, test, write, color, alpha) = match &d {
+        Some(d) => (
+            d.blending,
+            d.alpha_threshold,
+            d.depth_offset,
+            d.depth_test,
+            d.depth_write,
+            d.color_write,
+            d.alpha_write,
+        ),
+        None => (
+            CompositingMode::REPLACE,
+            0.0,
+            [0.0; 2],
+            true,
+            true,
+            true,
+            true,
+        ),
+    };
+    use BlendFactor::*;
+    s.blend = match blending {
+        CompositingMode::ALPHA => Some(Blend::func(SrcAlpha, OneMinusSrcAlpha)),
+        CompositingMode::ALPHA_ADD => Some(Blend::func(SrcAlpha, One)),
+        CompositingMode::MODULATE => Some(Blend::func(DstColor, Zero)),
+        CompositingMode::MODULATE_X2 => Some(Blend::func(DstColor, SrcColor)),
+        _ => None,
+    };
+    if threshold > 0.0 {
+        s.alpha_test = Some(AlphaTest {
+            func: CompareFunc::GreaterEqual,
+            reference: threshold,
+        });
+    }
+    s.color_mask = [color, color, color, alpha];
+    if depth {
+        // M3G writes depth even with the test off: emulate with ALWAYS.
+        s.depth_test = match (test, write) {
+            (true, _) => Some(CompareFunc::LessEqual),
+            (false, true) => Some(CompareFunc::Always),
+            (false, false) => None,
+        };
+        s.depth_write = write;
+        if offset != [0.0, 0.0] {
+            s.polygon_offset = Some(crate::core::state::PolygonOffset {
+                factor: offset[0],
+                units: offset[1],
+            });
+        }
+    } else {
+        s.depth_test = None;
+        s.depth_write = false;
+    }
+}
+
+fn apply_polygon_mode(s: &mut RenderState, pm: Option<&PolygonMode>) {
+    let (culling, winding, shading) = match pm {
+        Some(p) => {
+            let d = p.d();
+            (d.culling, d.winding, d.shading)
+        }
+        None => (
+            PolygonMode::CULL_BACK,
+            PolygonMode::WINDING_CCW,
+            PolygonMode::SHADE_SMOOTH,
+        ),
+    };
+    s.cull = match culling {
+        PolygonMode::CULL_BACK => Some(CullFace::Back),
+        PolygonMode::CULL_FRONT => Some(CullFace::Front),
+        _ => None,
+    };
+    s.front_face = if winding == PolygonMode::WINDING_CW {
+        Winding::Cw
+    } else {
+        Winding::Ccw
+    };
+    s.shade_model = if shading == PolygonMode::SHADE_FLAT {
+        ShadeModel::Flat
+    } else {
+        ShadeModel::Smooth
+    };
+}
+
+/// The one place a `core::DrawCall` is built (the core's DrawCall is growing fields).
+fn draw_call<'a>(
+    indices: Indices<'a>,
+    position: AttribArray<'a>,
+    color: AttribSource<'a>,
+) -> DrawCall<'a> {
+    let mut call = DrawCall::new(Primitive::Triangles, indices, position);
+    call.color = color;
+    call
+}
+
+fn f32_bytes(v: &[f32]) -> Vec<u8> {
+    v.iter().flat_map(|x| x.to_ne_bytes()).collect()
+}
+
+fn rgba_of(c: u32) -> Vec4 {
+    Vec4::from_array(argb_to_rgba(c))
+}
+
+/// GL 1.3 lighting of one vertex (eye space, non-local viewer, no scene ambient).
+fn light_vertex(
+    m: &MaterialData,
+    vertex_color: Vec4,
+    pos: Vec3,
+    n: Vec3,
+    lights: &[EyeLight],
+    scope: i32,
+) -> Vec4 {
+    let (amb, dif) = if m.tracking {
+        (vertex_color, vertex_color)
+    } else {
+        (rgba_of(m.ambient), rgba_of(m.diffuse))
+    };
+    let spec = rgba_of(m.specular).truncate();
+    let mut c = rgba_of(m.emissive).truncate();
+    for l in lights
+        .iter()
+        .filter(|l| l.scope & scope != 0)
+        .take(MAX_LIGHTS)
+    {
+        if l.mode == Light::AMBIENT {
+            c += amb.truncate() * l.color;
+            continue;
+        }
+        let (dir, att, spot) = if l.mode == Light::DIRECTIONAL {
+            (l.direction, 1.0, 1.0)
+        } else {
+            let v = l.position - pos;
+            let d = v.length();
+            let dir = v.normalize_or_zero();
+            let [k0, k1, k2] = l.attenuation;
+            let att = 1.0 / (k0 + k1 * d + k2 * d * d);
+            let spot = if l.mode == Light::SPOT {
+                let cos = (-dir).dot(l.direction);
+                if cos < l.cos_cutoff {
+                    0.0
+                } else {
+                    cos.max(0.0).powf(l.exponent)
+                }
+            } else {
+                1.0
+            };
+            (dir, att, spot)
+        };
+        let ndl = n.dot(dir).max(0.0);
+        let mut term = dif.truncate() * l.color * ndl;
+        if ndl > 0.0 {
+            let h = (dir + Vec3::Z).normalize_or_zero();
+            term += spec * l.color * n.dot(h).max(0.0).powf(m.shininess);
+        }
+        c += term * att * spot;
+    }
+    c.clamp(Vec3::ZERO, Vec3::ONE).extend(dif.w.clamp(0.0, 1.0))
+}
+
+fn fog_factor(fog: &super::appearance::FogData, z: f32) -> f32 {
+    let f = if fog.mode == super::appearance::Fog::LINEAR {
+        (fog.far - z) / (fog.far - fog.near)
+    } else {
+        (-fog.density * z).exp()
+    };
+    if f.is_nan() {
+        1.0
+    } else {
+        f.clamp(0.0, 1.0)
+    }
+}
+
+fn draw_submesh(
+    s: &mut RenderState,
+    b: &mut Bound,
+    vb: &VertexBuffer,
+    ib: &IndexBuffer,
+    app: &Appearance,
+    item: &Item,
+    lights: &[EyeLight],
+) {
+    let a = app.d().clone();
+    apply_compositing(s, a.compositing_mode.as_ref(), b.depth);
+    apply_polygon_mode(s, a.polygon_mode.as_ref());
+    let vbd = vb.d();
+    let pos = vbd.positions.clone().expect("validated");
+    let pd = pos.d();
+    let n = pd.count as usize;
+    let modelview = s.modelview;
+    // Scale and bias fold into the modelview.
+    s.modelview = modelview
+        * Mat4::from_translation(Vec3::from_array(vbd.pos_bias))
+        * Mat4::from_scale(Vec3::splat(vbd.pos_scale));
+    // Per-vertex colors: the color array or default color, lit when there is a Material,
+    // then the alpha factor, then (per vertex) fog.
+    let base: Vec<Vec4> = match &vbd.colors {
+        Some(c) => {
+            let cd = c.d();
+            (0..n)
+                .map(|v| {
+                    let ch = |k: usize| cd.data[v * cd.comps as usize + k] as f32 / 255.0;
+                    Vec4::new(ch(0), ch(1), ch(2), if cd.comps == 4 { ch(3) } else { 1.0 })
+                })
+                .collect()
+        }
+        None => vec![rgba_of(vbd.default_color); n],
+    };
+    let material = a.material.as_ref().map(|m| m.d().clone());
+    let fog = a.fog.as_ref().map(|f| f.d().clone());
+    let eye: Vec<Vec3> = if material.is_some() || fog.is_some() {
+        (0..n)
+            .map(|v| {
+                let p = Vec3::new(
+                    pd.get(v, 0) as f32,
+                    pd.get(v, 1) as f32,
+                    pd.get(v, 2) as f32,
+                );
+                (s.modelview * p.extend(1.0)).truncate()
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let mut colors = base;
+    if let Some(m) = &material {
+        let nm = Mat3::from_mat4(modelview).inverse().transpose();
+        let nm = if nm.is_finite() { nm } else { Mat3::IDENTITY };
+        for (v, c) in colors.iter_mut().enumerate() {
+            let normal = vbd.normals.as_ref().map_or(Vec3::Z, |na| {
+                let nd = na.d();
+                let k = |c: usize| {
+                    let x = nd.get(v, c) as f32;
+                    if nd.size == 1 {
+                        (2.0 * x + 1.0) / 255.0
+                    } else {
+                        (2.0 * x + 1.0) / 65535.0
+                    }
+                };
+                Vec3::new(k(0), k(1), k(2))
+            });
+            let ne = (nm * normal).normalize_or_zero();
+            *c = light_vertex(m, *c, eye[v], ne, lights, item.scope);
+        }
+    }
+    for c in colors.iter_mut() {
+        c.w *= item.alpha;
+    }
+    if let Some(f) = &fog {
+        let fc = rgba_of(f.color).truncate();
+        for (v, c) in colors.iter_mut().enumerate() {
+            let k = fog_factor(f, eye[v].z.abs());
+            *c = (c.truncate() * k + fc * (1.0 - k)).extend(c.w);
+        }
+    }
+    let flat: Vec<f32> = colors.iter().flat_map(|c| c.to_array()).collect();
+    let cbytes = f32_bytes(&flat);
+    let ibd = ib.d();
+    let call = draw_call(
+        Indices::U16(&ibd.triangles),
+        AttribArray {
+            data: &pd.data,
+            ty: if pd.size == 1 {
+                core::ComponentType::Byte
+            } else {
+                core::ComponentType::Short
+            },
+            size: 3,
+            stride: 3 * pd.size as usize,
+            normalized: false,
+        },
+        AttribSource::Array(AttribArray {
+            data: &cbytes,
+            ty: core::ComponentType::Float,
+            size: 4,
+            stride: 16,
+            normalized: false,
+        }),
+    );
+    // Out of memory drops the draw (M3G has no such exception).
+    let _ = core::record(s, &call, &mut b.frame);
+}
+
+/// A sprite's screen rectangle (M3G window coordinates: x right, y down), depth in NDC, and
+/// eye distance; `None` when culled.
+pub(crate) fn sprite_rect(
+    sprite: &Sprite3D,
+    modelview: Mat4,
+    projection: Mat4,
+    viewport: [i32; 4],
+) -> Option<([f32; 4], f32, f32)> {
+    let d = sprite.d();
+    let [vx, vy, vw, vh] = viewport.map(|v| v as f32);
+    let o = modelview * Vec4::new(0.0, 0.0, 0.0, 1.0);
+    let oc = projection * o;
+    if oc.w <= 0.0 {
+        return None;
+    }
+    let on = oc.truncate() / oc.w;
+    if !(-1.0..=1.0).contains(&on.z) {
+        return None;
+    }
+    let (w, h) = if d.scaled {
+        let x = modelview * Vec4::new(1.0, 0.0, 0.0, 1.0);
+        let y = modelview * Vec4::new(0.0, 1.0, 0.0, 1.0);
+        let o3 = o.truncate() / o.w;
+        let dx = (x.truncate() / x.w - o3).length();
+        let dy = (y.truncate() / y.w - o3).length();
+        let xc = projection * (o + Vec4::new(dx, 0.0, 0.0, 0.0));
+        let yc = projection * (o + Vec4::new(0.0, dy, 0.0, 0.0));
+        let sx = (xc.truncate() / xc.w - on).truncate().length();
+        let sy = (yc.truncate() / yc.w - on).truncate().length();
+        (0.5 * sx * vw, 0.5 * sy * vh)
+    } else {
+        (d.crop[2].abs() as f32, d.crop[3].abs() as f32)
+    };
+    let cx = vx + (on.x + 1.0) * 0.5 * vw;
+    let cy = vy + (1.0 - on.y) * 0.5 * vh;
+    let (mut x0, mut y0) = (cx - w * 0.5, cy - h * 0.5);
+    if !d.scaled {
+        x0 = x0.round();
+        y0 = y0.round();
+    }
+    Some(([x0, y0, w, h], on.z, -o.z / o.w))
+}
+
+/// Draws a sprite as one flat quad per crop pixel, in NDC, through the core (so blending,
+/// alpha and depth tests are the core's).
+fn draw_sprite(
+    base: &RenderState,
+    b: &mut Bound,
+    sprite: &Sprite3D,
+    app: &Appearance,
+    mv: Mat4,
+    alpha: f32,
+) {
+    let [crop_x, crop_y, cw, ch] = sprite.d().crop;
+    if cw == 0 || ch == 0 {
+        return;
+    }
+    let vp = base.viewport;
+    let th = b.target.height() as i32;
+    let viewport = [vp.x, th - vp.y - vp.height, vp.width, vp.height];
+    let Some(([x0, y0, w, h], z, dist)) = sprite_rect(sprite, mv, base.projection, viewport) else {
+        return;
+    };
+    let mut s = base.clone();
+    s.modelview = Mat4::IDENTITY;
+    s.projection = Mat4::IDENTITY;
+    s.shade_model = ShadeModel::Flat;
+    s.cull = None;
+    let a = app.d().clone();
+    apply_compositing(&mut s, a.compositing_mode.as_ref(), b.depth);
+    let fog = a.fog.as_ref().map(|f| {
+        let d = f.d();
+        (fog_factor(&d, dist.abs()), rgba_of(d.color).truncate())
+    });
+    let img = sprite.image();
+    let id = img.d();
+    let (ncols, nrows) = (cw.unsigned_abs() as usize, ch.unsigned_abs() as usize);
+    let (vx, vy, vw, vh) = (
+        viewport[0] as f32,
+        viewport[1] as f32,
+        viewport[2] as f32,
+        viewport[3] as f32,
+    );
+    let ndc_x = |x: f32| (x - vx) / vw * 2.0 - 1.0;
+    let ndc_y = |y: f32| 1.0 - (y - vy) / vh * 2.0;
+    let mut pos = Vec::new();
+    let mut col = Vec::new();
+    for j in 0..nrows {
+        let iy = crop_y
+            + if ch > 0 {
+                j as i32
+            } else {
+                (nrows - 1 - j) as i32
+            };
+        if !(0..id.height).contains(&iy) {
+            continue;
+        }
+        for i in 0..ncols {
+            let ix = crop_x
+                + if cw > 0 {
+                    i as i32
+                } else {
+                    (ncols - 1 - i) as i32
+                };
+            if !(0..id.width).contains(&ix) {
+                continue;
+            }
+            let mut c = Vec4::from_array(id.rgba(ix, iy));
+            c.w *= alpha;
+            if let Some((f, fc)) = fog {
+                c = (c.truncate() * f + fc * (1.0 - f)).extend(c.w);
+            }
+            let (xa, xb) = (
+                x0 + w * i as f32 / ncols as f32,
+                x0 + w * (i + 1) as f32 / ncols as f32,
+            );
+            let (ya, yb) = (
+                y0 + h * j as f32 / nrows as f32,
+                y0 + h * (j + 1) as f32 / nrows as f32,
+            );
+            let (l, r, t, bt) = (ndc_x(xa), ndc_x(xb), ndc_y(ya), ndc_y(yb));
+            for (px, py) in [(l, bt), (r, bt), (r, t), (l, bt), (r, t), (l, t)] {
+                pos.extend([px, py, z]);
+                col.extend(c.to_array());
+            }
+        }
+    }
+    if pos.is_empty() {
+        return;
+    }
+    let (pb, cb) = (f32_bytes(&pos), f32_bytes(&col));
+    let call = draw_call(
+        Indices::Range {
+            first: 0,
+            count: pos.len() / 3,
+        },
+        AttribArray {
+            data: &pb,
+            ty: core::ComponentType::Float,
+            size: 3,
+            stride: 12,
+            normalized: false,
+        },
+        AttribSource::Array(AttribArray {
+            data: &cb,
+            ty: core::ComponentType::Float,
+            size: 4,
+            stride: 16,
+            normalized: false,
+        }),
+    );
+    let _ = core::record(&s, &call, &mut b.frame);
+}

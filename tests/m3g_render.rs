@@ -1,0 +1,692 @@
+//! M3G Graphics3D rendering and picking: exact pixels, the core reference, and errors.
+
+use GLES_CM::core::{self, ColorFormat, DepthFormat, Target, TargetFormat};
+use GLES_CM::m3g::*;
+
+fn is_iae<T: std::fmt::Debug>(r: Result<T>) -> bool {
+    matches!(r, Err(M3gError::IllegalArgument(_)))
+}
+fn is_ise<T: std::fmt::Debug>(r: Result<T>) -> bool {
+    matches!(r, Err(M3gError::IllegalState(_)))
+}
+fn is_ae<T: std::fmt::Debug>(r: Result<T>) -> bool {
+    matches!(r, Err(M3gError::Arithmetic(_)))
+}
+
+/// A square from (-s, -s, z) to (s, s, z), counter-clockwise seen from +Z, as a strip.
+fn quad(s: f32, z: i16, argb: u32) -> (VertexBuffer, IndexBuffer) {
+    let va = VertexArray::new(4, 3, 2).unwrap();
+    va.set_shorts(0, 4, &[-1, -1, z, 1, -1, z, 1, 1, z, -1, 1, z])
+        .unwrap();
+    let vb = VertexBuffer::new();
+    vb.set_positions(Some(&va), s, None).unwrap();
+    vb.set_default_color(argb as i32);
+    let na = VertexArray::new(4, 3, 1).unwrap();
+    na.set_bytes(0, 4, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127])
+        .unwrap();
+    vb.set_normals(Some(&na)).unwrap();
+    let ib = TriangleStripArray::new_explicit(&[0, 1, 3, 2], &[4])
+        .unwrap()
+        .as_index_buffer();
+    (vb, ib)
+}
+
+fn ortho_camera() -> Camera {
+    let c = Camera::new();
+    c.set_parallel(2.0, 1.0, -10.0, 10.0).unwrap();
+    c
+}
+
+fn px(img: &Image2D, x: usize, y: usize) -> [u8; 3] {
+    let p = img.pixels();
+    let b = if img.format() == Image2D::RGBA { 4 } else { 3 };
+    let w = img.width() as usize;
+    let at = (y * w + x) * b;
+    [p[at], p[at + 1], p[at + 2]]
+}
+
+#[test]
+fn flat_quad_in_a_parallel_camera_is_pixel_exact() {
+    let img = Image2D::new(Image2D::RGB, 16, 16).unwrap();
+    let mut g = Graphics3D::new();
+    g.bind_image(&img, true, 0).unwrap();
+    assert_eq!(g.viewport(), [0, 0, 16, 16]);
+    g.clear(None).unwrap();
+    g.set_camera(Some(&ortho_camera()), None).unwrap();
+    let (vb, ib) = quad(0.5, 0, 0xFFFF0000);
+    g.render_submesh(&vb, &ib, &Appearance::new(), None, -1)
+        .unwrap();
+    g.release_target();
+    for y in 0..16 {
+        for x in 0..16 {
+            let inside = (4..12).contains(&x) && (4..12).contains(&y);
+            let want = if inside { [255, 0, 0] } else { [0, 0, 0] };
+            assert_eq!(px(&img, x, y), want, "({x},{y})");
+        }
+    }
+}
+
+#[test]
+fn y_points_down_and_viewport_offsets() {
+    // A quad in the upper half of NDC lands in the top rows of the image.
+    let img = Image2D::new(Image2D::RGBA, 8, 8).unwrap();
+    let mut g = Graphics3D::new();
+    g.bind_image(&img, true, 0).unwrap();
+    g.clear(None).unwrap();
+    g.set_camera(Some(&ortho_camera()), None).unwrap();
+    g.set_viewport(4, 0, 4, 4).unwrap();
+    let (vb, ib) = quad(1.0, 0, 0xFF00FF00);
+    let mut t = Transform::new();
+    t.post_translate(0.0, 0.5, 0.0);
+    t.post_scale(1.0, 0.5, 1.0);
+    g.render_submesh(&vb, &ib, &Appearance::new(), Some(&t), -1)
+        .unwrap();
+    g.release_target();
+    for y in 0..8 {
+        for x in 0..8 {
+            let want = if x >= 4 && y < 2 {
+                [0, 255, 0]
+            } else {
+                [0, 0, 0]
+            };
+            assert_eq!(px(&img, x, y), want, "({x},{y})");
+        }
+    }
+}
+
+#[test]
+fn world_render_with_background_layers_scope_and_enable() {
+    let img = Image2D::new(Image2D::RGB, 16, 16).unwrap();
+    let world = World::new();
+    let cam = ortho_camera();
+    world.add_child(&cam).unwrap();
+    world.set_active_camera(&cam);
+    let bg = Background::new();
+    bg.set_color(0xFF0000FFu32 as i32);
+    world.set_background(Some(&bg));
+    // Red on layer 1 drawn first in the graph, green on layer 0 at the same depth: green is
+    // drawn first, then red over it (depth LEQUAL).
+    let (vb1, ib1) = quad(0.5, 0, 0xFFFF0000);
+    let a1 = Appearance::new();
+    a1.set_layer(1).unwrap();
+    let m1 = Mesh::new(&vb1, &ib1, Some(&a1));
+    let (vb2, ib2) = quad(0.5, 0, 0xFF00FF00);
+    let m2 = Mesh::new(&vb2, &ib2, Some(&Appearance::new()));
+    world.add_child(&m1).unwrap();
+    world.add_child(&m2).unwrap();
+    let mut g = Graphics3D::new();
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_world(&world).unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 8, 8), [255, 0, 0]);
+    assert_eq!(px(&img, 0, 0), [0, 0, 255]);
+    // Out of scope, disabled, or without appearance: not drawn.
+    m1.set_scope(0);
+    m2.set_rendering_enable(false);
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_world(&world).unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 8, 8), [0, 0, 255]);
+    m1.set_scope(-1);
+    m1.set_appearance(0, None).unwrap();
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_world(&world).unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 8, 8), [0, 0, 255]);
+    // A disabled group disables its children; the camera's own flag is ignored.
+    m2.set_rendering_enable(true);
+    cam.set_rendering_enable(false);
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_world(&world).unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 8, 8), [0, 255, 0]);
+    assert_eq!(g.light_count(), 0);
+    // Color clear disabled keeps the old pixels.
+    bg.set_color_clear_enable(false);
+    img.set(0, 0, 1, 1, &[9, 9, 9]).unwrap();
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_world(&world).unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 0, 0), [9, 9, 9]);
+}
+
+#[test]
+fn opaque_before_blended_within_a_layer() {
+    let img = Image2D::new(Image2D::RGB, 8, 8).unwrap();
+    let world = World::new();
+    let cam = ortho_camera();
+    world.add_child(&cam).unwrap();
+    world.set_active_camera(&cam);
+    // A half-transparent white quad in front, listed first; an opaque blue quad behind.
+    let (vb1, ib1) = quad(1.0, 1, 0x80FFFFFF);
+    let a1 = Appearance::new();
+    let cm = CompositingMode::new();
+    cm.set_blending(CompositingMode::ALPHA).unwrap();
+    a1.set_compositing_mode(Some(&cm));
+    let (vb2, ib2) = quad(1.0, 0, 0xFF0000FF);
+    world.add_child(&Mesh::new(&vb1, &ib1, Some(&a1))).unwrap();
+    world
+        .add_child(&Mesh::new(&vb2, &ib2, Some(&Appearance::new())))
+        .unwrap();
+    let mut g = Graphics3D::new();
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_world(&world).unwrap();
+    g.release_target();
+    let p = px(&img, 4, 4);
+    assert!(p[0].abs_diff(128) <= 1 && p[2] == 255, "{p:?}");
+}
+
+#[test]
+fn blend_modes_and_alpha_factor() {
+    let cases = [
+        (CompositingMode::REPLACE, [255u8, 128, 0]),
+        // Source (255, 128, 0) with alpha 0.5 (the factor), destination (200, 0, 0).
+        (CompositingMode::ALPHA, [228, 64, 0]),
+        (CompositingMode::ALPHA_ADD, [255, 64, 0]),
+        (CompositingMode::MODULATE, [200, 0, 0]),
+        (CompositingMode::MODULATE_X2, [255, 0, 0]),
+    ];
+    for (mode, want) in cases {
+        let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+        let mut g = Graphics3D::new();
+        g.bind_image(&img, true, 0).unwrap();
+        let bg = Background::new();
+        bg.set_color(0xFFC80000u32 as i32); // (200, 0, 0)
+        g.clear(Some(&bg)).unwrap();
+        g.set_camera(Some(&ortho_camera()), None).unwrap();
+        let (vb, ib) = quad(1.0, 0, 0xFFFF8000);
+        let mesh = Mesh::new(&vb, &ib, Some(&Appearance::new()));
+        let cm = CompositingMode::new();
+        cm.set_blending(mode).unwrap();
+        mesh.appearance(0)
+            .unwrap()
+            .unwrap()
+            .set_compositing_mode(Some(&cm));
+        let grp = Group::new();
+        grp.set_alpha_factor(0.5).unwrap();
+        grp.add_child(&mesh).unwrap();
+        g.render_node(&grp, None).unwrap();
+        g.release_target();
+        let p = px(&img, 1, 1);
+        for c in 0..3 {
+            assert!(
+                p[c].abs_diff(want[c]) <= 1,
+                "mode {mode}: {p:?} vs {want:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn depth_is_written_with_the_test_off() {
+    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let mut g = Graphics3D::new();
+    g.bind_image(&img, true, 0).unwrap();
+    g.clear(None).unwrap();
+    g.set_camera(Some(&ortho_camera()), None).unwrap();
+    let (near, ib) = quad(1.0, 5, 0xFFFF0000);
+    let (far, _) = quad(1.0, -5, 0xFF00FF00);
+    let a = Appearance::new();
+    let cm = CompositingMode::new();
+    cm.set_depth_test_enable(false);
+    a.set_compositing_mode(Some(&cm));
+    g.render_submesh(&near, &ib, &a, None, -1).unwrap();
+    g.render_submesh(&far, &ib, &Appearance::new(), None, -1)
+        .unwrap();
+    g.release_target();
+    assert_eq!(
+        px(&img, 1, 1),
+        [255, 0, 0],
+        "the far quad fails against the written depth"
+    );
+    // Without a depth buffer nothing is tested.
+    g.bind_image(&img, false, 0).unwrap();
+    g.render_submesh(&far, &ib, &Appearance::new(), None, -1)
+        .unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 1, 1), [0, 255, 0]);
+}
+
+#[test]
+fn culling_and_winding() {
+    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let mut g = Graphics3D::new();
+    let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
+    for (cull, wind, drawn) in [
+        (PolygonMode::CULL_BACK, PolygonMode::WINDING_CCW, true),
+        (PolygonMode::CULL_FRONT, PolygonMode::WINDING_CCW, false),
+        (PolygonMode::CULL_BACK, PolygonMode::WINDING_CW, false),
+        (PolygonMode::CULL_NONE, PolygonMode::WINDING_CW, true),
+    ] {
+        g.bind_image(&img, true, 0).unwrap();
+        g.clear(None).unwrap();
+        g.set_camera(Some(&ortho_camera()), None).unwrap();
+        let a = Appearance::new();
+        let pm = PolygonMode::new();
+        pm.set_culling(cull).unwrap();
+        pm.set_winding(wind).unwrap();
+        a.set_polygon_mode(Some(&pm));
+        g.render_submesh(&vb, &ib, &a, None, -1).unwrap();
+        g.release_target();
+        assert_eq!(px(&img, 1, 1) == [255; 3], drawn, "{cull} {wind}");
+    }
+}
+
+#[test]
+fn directional_light_on_a_material() {
+    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let world = World::new();
+    let cam = ortho_camera();
+    world.add_child(&cam).unwrap();
+    world.set_active_camera(&cam);
+    let light = Light::new(); // directional along -Z: lights a +Z-facing quad fully
+    world.add_child(&light).unwrap();
+    let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
+    let a = Appearance::new();
+    let mat = Material::new();
+    a.set_material(Some(&mat));
+    world.add_child(&Mesh::new(&vb, &ib, Some(&a))).unwrap();
+    let mut g = Graphics3D::new();
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_world(&world).unwrap();
+    g.release_target();
+    assert_eq!(g.light_count(), 1);
+    assert_eq!(
+        px(&img, 1, 1),
+        [204, 204, 204],
+        "diffuse 0.8, no scene ambient"
+    );
+    // An ambient light adds 0.2 · intensity; turning the directional light away removes it.
+    light.set_orientation(180.0, 0.0, 1.0, 0.0).unwrap();
+    let amb = Light::new();
+    amb.set_mode(Light::AMBIENT).unwrap();
+    amb.set_intensity(0.5);
+    world.add_child(&amb).unwrap();
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_world(&world).unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 1, 1), [26, 26, 26], "ambient 0.2 × 0.5");
+}
+
+#[test]
+fn vertex_colors_scale_and_bias_against_the_reference() {
+    // A perspective scene: a byte-position triangle fan with per-vertex colors.
+    let va = VertexArray::new(4, 3, 1).unwrap();
+    va.set_bytes(
+        0,
+        4,
+        &[-100, -90, 0, 110, -80, -20, 90, 100, -60, -80, 70, 10],
+    )
+    .unwrap();
+    let ca = VertexArray::new(4, 4, 1).unwrap();
+    ca.set_ubytes(
+        0,
+        4,
+        &[
+            255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255,
+        ],
+    )
+    .unwrap();
+    let vb = VertexBuffer::new();
+    vb.set_positions(Some(&va), 2.0 / 255.0, Some(&[0.1, -0.05, 0.0]))
+        .unwrap();
+    vb.set_colors(Some(&ca)).unwrap();
+    let ib = TriangleStripArray::new_explicit(&[0, 1, 3, 2], &[4])
+        .unwrap()
+        .as_index_buffer();
+    let cam = Camera::new();
+    cam.set_perspective(60.0, 1.25, 0.5, 20.0).unwrap();
+    let mut cam_t = Transform::new();
+    cam_t.post_translate(0.2, 0.1, 3.0);
+    let mut model = Transform::new();
+    model.post_rotate(30.0, 1.0, 1.0, 0.0).unwrap();
+    let format = TargetFormat {
+        color: ColorFormat::Rgba8888,
+        depth: Some(DepthFormat::D24),
+        stencil_bits: 0,
+    };
+    let mut g = Graphics3D::new();
+    g.bind_target(Target::new(80, 64, format), true, 0).unwrap();
+    g.clear(None).unwrap();
+    g.set_camera(Some(&cam), Some(&cam_t)).unwrap();
+    let a = Appearance::new();
+    let pm = PolygonMode::new();
+    pm.set_culling(PolygonMode::CULL_NONE).unwrap();
+    a.set_polygon_mode(Some(&pm));
+    g.render_submesh(&vb, &ib, &a, Some(&model), -1).unwrap();
+    let ours = g.release_target().unwrap();
+    // The same draw described to the reference renderer directly, in floats.
+    let mut s = core::RenderState::new(80, 64);
+    let mut view = cam_t;
+    view.invert().unwrap();
+    view.post_multiply(&model);
+    s.modelview = view.to_mat4();
+    s.projection = cam.get_projection().unwrap().1.to_mat4();
+    s.depth_test = Some(core::CompareFunc::LessEqual);
+    let raw = [-100i8, -90, 0, 110, -80, -20, 90, 100, -60, -80, 70, 10];
+    let pos: Vec<u8> = raw
+        .chunks(3)
+        .flat_map(|v| {
+            let b = [0.1f32, -0.05, 0.0];
+            (0..3).map(move |k| v[k] as f32 * (2.0 / 255.0) + b[k])
+        })
+        .flat_map(|f| f.to_ne_bytes())
+        .collect();
+    let cols = [
+        255u8, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255,
+    ];
+    let idx = [0u16, 1, 3, 3, 1, 2];
+    let mut call = core::DrawCall::new(
+        core::Primitive::Triangles,
+        core::Indices::U16(&idx),
+        core::AttribArray {
+            data: &pos,
+            ty: core::ComponentType::Float,
+            size: 3,
+            stride: 12,
+            normalized: false,
+        },
+    );
+    call.color = core::AttribSource::Array(core::AttribArray {
+        data: &cols,
+        ty: core::ComponentType::UnsignedByte,
+        size: 4,
+        stride: 4,
+        normalized: true,
+    });
+    let mut reference = Target::new(80, 64, format);
+    reference.clear_color(reference.bounds(), [0.0; 4], [true; 4]);
+    core::reference::render(&s, &call, &mut reference);
+    let e = core::reference::compare(&ours, &reference);
+    let covered = ours.color().iter().filter(|&&w| w != 0).count();
+    assert!(covered > 500, "the fan covers the view: {covered}");
+    assert!(e.over_one < 0.01 && e.mean < 0.5, "{e:?}");
+}
+
+#[test]
+fn unscaled_sprite_is_pixel_exact() {
+    let img = Image2D::new(Image2D::RGB, 16, 16).unwrap();
+    let pixels: Vec<u8> = (0..4 * 2).flat_map(|i| [i as u8 * 30, 0, 255]).collect();
+    let simg = Image2D::with_pixels(Image2D::RGB, 4, 2, &pixels).unwrap();
+    let sprite = Sprite3D::new(false, &simg, Some(&Appearance::new()));
+    let mut g = Graphics3D::new();
+    g.bind_image(&img, true, 0).unwrap();
+    g.clear(None).unwrap();
+    g.set_camera(Some(&ortho_camera()), None).unwrap();
+    g.render_node(&sprite, None).unwrap();
+    g.release_target();
+    // Centered at (8, 8): columns 6..10, rows 7..9, image pixel (i, j) at (6 + i, 7 + j).
+    for y in 0..16 {
+        for x in 0..16 {
+            let want = if (6..10).contains(&x) && (7..9).contains(&y) {
+                [((y - 7) * 4 + (x - 6)) as u8 * 30, 0, 255]
+            } else {
+                [0, 0, 0]
+            };
+            assert_eq!(px(&img, x, y), want, "({x},{y})");
+        }
+    }
+    // A crop with a negative width mirrors; crop 0 draws nothing.
+    sprite.set_crop(0, 0, -4, 2).unwrap();
+    g.bind_image(&img, true, 0).unwrap();
+    g.render_node(&sprite, None).unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 6, 7), [90, 0, 255]);
+    sprite.set_crop(0, 0, 0, 2).unwrap();
+    g.bind_image(&img, true, 0).unwrap();
+    g.clear(None).unwrap();
+    g.render_node(&sprite, None).unwrap();
+    g.release_target();
+    assert_eq!(px(&img, 7, 7), [0, 0, 0]);
+}
+
+#[test]
+fn background_image_border_and_repeat() {
+    let target = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let bimg = Image2D::with_pixels(Image2D::RGB, 2, 1, &[10, 0, 0, 20, 0, 0]).unwrap();
+    let bg = Background::new();
+    bg.set_color(0xFF0000FFu32 as i32);
+    bg.set_image(Some(&bimg)).unwrap();
+    bg.set_crop(0, 0, 4, 1).unwrap(); // twice the image width
+    let mut g = Graphics3D::new();
+    g.bind_image(&target, true, 0).unwrap();
+    g.clear(Some(&bg)).unwrap();
+    g.release_target();
+    assert_eq!(px(&target, 0, 0), [10, 0, 0]);
+    assert_eq!(px(&target, 1, 3), [20, 0, 0]);
+    assert_eq!(px(&target, 2, 0), [0, 0, 255], "BORDER: background color");
+    bg.set_image_mode(Background::REPEAT, Background::BORDER)
+        .unwrap();
+    g.bind_image(&target, true, 0).unwrap();
+    g.clear(Some(&bg)).unwrap();
+    g.release_target();
+    assert_eq!(px(&target, 2, 0), [10, 0, 0], "REPEAT wraps");
+    assert_eq!(px(&target, 3, 2), [20, 0, 0]);
+    // A format mismatch: IllegalArgument from clear, IllegalState from render(World).
+    let rgba = Image2D::new(Image2D::RGBA, 2, 2).unwrap();
+    bg.set_image(Some(&rgba)).unwrap();
+    g.bind_image(&target, true, 0).unwrap();
+    assert!(is_iae(g.clear(Some(&bg))));
+    let w = World::new();
+    let c = Camera::new();
+    w.add_child(&c).unwrap();
+    w.set_active_camera(&c);
+    w.set_background(Some(&bg));
+    assert!(is_ise(g.render_world(&w)));
+    g.release_target();
+}
+
+#[test]
+fn graphics3d_errors_and_state() {
+    let mut g = Graphics3D::new();
+    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
+    let app = Appearance::new();
+    assert!(is_ise(g.clear(None)), "no target");
+    assert!(is_ise(g.render_submesh(&vb, &ib, &app, None, -1)));
+    assert!(
+        g.release_target().is_none(),
+        "release without target is ignored"
+    );
+    let fixed = Image2D::with_pixels(Image2D::RGB, 1, 1, &[0; 3]).unwrap();
+    assert!(is_iae(g.bind_image(&fixed, true, 0)), "immutable");
+    assert!(is_iae(g.bind_image(
+        &Image2D::new(Image2D::ALPHA, 1, 1).unwrap(),
+        true,
+        0
+    )));
+    assert!(is_iae(g.bind_image(&img, true, 1)), "bit 0 is not a hint");
+    assert!(is_iae(g.bind_image(
+        &Image2D::new(Image2D::RGB, MAX_VIEWPORT_DIMENSION + 1, 1).unwrap(),
+        true,
+        0
+    )));
+    g.bind_image(&img, true, Graphics3D::DITHER | Graphics3D::OVERWRITE)
+        .unwrap();
+    assert_eq!(g.hints(), 20);
+    assert!(g.is_depth_buffer_enabled());
+    assert_eq!(g.target_image(), Some(img.clone()));
+    assert!(is_ise(g.bind_image(&img, true, 0)), "already bound");
+    assert!(
+        is_ise(Graphics3D::new().bind_image(&img, true, 0)),
+        "bound elsewhere"
+    );
+    assert!(
+        is_ise(g.render_submesh(&vb, &ib, &app, None, -1)),
+        "no camera"
+    );
+    assert!(is_iae(g.set_viewport(0, 0, 0, 1)));
+    assert!(is_iae(g.set_viewport(0, 0, MAX_VIEWPORT_DIMENSION + 1, 1)));
+    g.set_viewport(-5, -5, 10, 10).unwrap();
+    assert!(is_iae(g.set_depth_range(-0.1, 1.0)));
+    g.set_depth_range(1.0, 0.0).unwrap();
+    assert_eq!(g.depth_range(), [1.0, 0.0]);
+    let mut singular = Transform::new();
+    singular.post_scale(0.0, 1.0, 1.0);
+    assert!(is_ae(g.set_camera(Some(&Camera::new()), Some(&singular))));
+    g.set_camera(Some(&Camera::new()), None).unwrap();
+    assert!(is_iae(g.render_node(&Camera::new(), None)));
+    assert!(is_iae(g.render_node(&Light::new(), None)));
+    // Deferred checks: no positions, an index past the vertex count.
+    assert!(is_ise(g.render_submesh(
+        &VertexBuffer::new(),
+        &ib,
+        &app,
+        None,
+        -1
+    )));
+    let big = TriangleStripArray::new_implicit(2, &[3])
+        .unwrap()
+        .as_index_buffer();
+    assert!(is_ise(g.render_submesh(&vb, &big, &app, None, -1)));
+    // Out of scope: not drawn, not validated.
+    let cam = Camera::new();
+    cam.set_scope(1);
+    g.set_camera(Some(&cam), None).unwrap();
+    assert!(g.render_submesh(&vb, &big, &app, None, 2).is_ok());
+    // Lights.
+    let l = Light::new();
+    assert_eq!(g.add_light(&l, None), 0);
+    assert_eq!(
+        g.add_light(&l, Some(&singular)),
+        1,
+        "light transforms may be singular"
+    );
+    g.set_light(0, None, None).unwrap();
+    assert_eq!(g.light_count(), 2);
+    assert!(g.light(0).unwrap().is_none());
+    assert!(matches!(
+        g.set_light(2, None, None),
+        Err(M3gError::IndexOutOfBounds(_))
+    ));
+    assert!(matches!(g.light(-1), Err(M3gError::IndexOutOfBounds(_))));
+    g.reset_lights();
+    assert_eq!(g.light_count(), 0);
+    g.release_target();
+    assert!(g.target_image().is_none());
+    // World checks.
+    let w = World::new();
+    g.bind_image(&img, true, 0).unwrap();
+    assert!(is_ise(g.render_world(&w)), "no active camera");
+    let c = Camera::new();
+    w.set_active_camera(&c);
+    assert!(is_ise(g.render_world(&w)), "camera outside the world");
+    w.add_child(&c).unwrap();
+    c.set_scale(0.0, 1.0, 1.0);
+    assert!(is_ae(g.render_world(&w)), "singular camera transform");
+    c.set_scale(1.0, 1.0, 1.0);
+    // near == far: nothing rendered, nothing validated.
+    c.set_parallel(1.0, 1.0, 2.0, 2.0).unwrap();
+    w.add_child(&Mesh::new(&VertexBuffer::new(), &ib, Some(&app)))
+        .unwrap();
+    assert!(g.render_world(&w).is_ok());
+    c.set_parallel(1.0, 1.0, 1.0, 2.0).unwrap();
+    assert!(is_ise(g.render_world(&w)), "a mesh without positions");
+    g.release_target();
+    let props = Graphics3D::get_properties();
+    assert_eq!(props["maxLights"], Property::Int(8));
+    assert!(props.len() >= 14);
+}
+
+#[test]
+fn picking_meshes() {
+    let w = World::new();
+    let cam = Camera::new();
+    cam.set_perspective(60.0, 1.0, 1.0, 11.0).unwrap();
+    cam.set_translation(0.0, 0.0, 1.0);
+    w.add_child(&cam).unwrap();
+    let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
+    let tc = VertexArray::new(4, 2, 1).unwrap();
+    tc.set_bytes(0, 4, &[0, 1, 1, 1, 1, 0, 0, 0]).unwrap();
+    vb.set_tex_coords(0, Some(&tc), 1.0, None).unwrap();
+    let mesh = Mesh::new(&vb, &ib, Some(&Appearance::new()));
+    mesh.set_translation(0.0, 0.0, -4.0);
+    let g = Group::new();
+    g.add_child(&mesh).unwrap();
+    w.add_child(&g).unwrap();
+    let ri = w
+        .pick_ray(-1, [0.5, 0.0, 0.0], [0.0, 0.0, -2.0])
+        .unwrap()
+        .expect("hit");
+    assert!(
+        (ri.distance() - 2.0).abs() < 1e-5,
+        "in units of the ray length"
+    );
+    assert_eq!(ri.intersected(), Some(mesh.as_node()));
+    assert_eq!(ri.submesh_index(), 0);
+    assert!((ri.normal_z() - 1.0).abs() < 1e-4);
+    assert!((ri.texture_s(0).unwrap() - 0.75).abs() < 1e-4);
+    assert!((ri.texture_t(0).unwrap() - 0.5).abs() < 1e-4);
+    assert_eq!(ri.ray(), [0.5, 0.0, 0.0, 0.0, 0.0, -2.0]);
+    assert!(matches!(
+        ri.texture_s(NUM_TEXTURE_UNITS as i32),
+        Err(M3gError::IndexOutOfBounds(_))
+    ));
+    assert!(
+        w.pick_ray(-1, [2.0, 0.0, 0.0], [0.0, 0.0, -1.0])
+            .unwrap()
+            .is_none(),
+        "miss"
+    );
+    assert!(
+        w.pick_ray(-1, [0.0, 0.0, -8.0], [0.0, 0.0, 1.0])
+            .unwrap()
+            .is_none(),
+        "back face culled"
+    );
+    assert!(is_iae(w.pick_ray(-1, [0.0; 3], [0.0; 3])));
+    // Camera variant: the ray starts on the near plane; the far plane is at distance 1.
+    let ri = w.pick(-1, 0.5, 0.5, &cam).unwrap().expect("hit");
+    assert!((ri.distance() - 0.4).abs() < 1e-4, "{}", ri.distance());
+    // Scope and picking enable.
+    assert!(w.pick(2, 0.5, 0.5, &cam).unwrap().is_some());
+    mesh.set_scope(1);
+    assert!(w.pick(2, 0.5, 0.5, &cam).unwrap().is_none());
+    mesh.set_scope(-1);
+    g.set_picking_enable(false);
+    assert!(w.pick(-1, 0.5, 0.5, &cam).unwrap().is_none());
+    g.set_picking_enable(true);
+    // Picking from a subgroup: the ray is in that group's coordinates.
+    let ri = g.pick(-1, 0.5, 0.5, &cam).unwrap().unwrap();
+    assert!((ri.ray()[2] - 0.0).abs() < 1e-4);
+    assert!(
+        is_ise(w.pick(-1, 0.5, 0.5, &Camera::new())),
+        "camera in another graph"
+    );
+    // Invalid data is IllegalState.
+    mesh.set_translation(0.0, 0.0, 0.0);
+    let bad = Mesh::new(&VertexBuffer::new(), &ib, Some(&Appearance::new()));
+    g.add_child(&bad).unwrap();
+    assert!(is_ise(w.pick(-1, 0.5, 0.5, &cam)));
+}
+
+#[test]
+fn picking_scaled_sprites_checks_alpha() {
+    let w = World::new();
+    let cam = Camera::new();
+    cam.set_parallel(2.0, 1.0, -10.0, 10.0).unwrap();
+    w.add_child(&cam).unwrap();
+    // Left column transparent, right column opaque.
+    let img = Image2D::with_pixels(Image2D::RGBA, 2, 1, &[0, 0, 0, 0, 255, 255, 255, 255]).unwrap();
+    let app = Appearance::new();
+    let cm = CompositingMode::new();
+    cm.set_alpha_threshold(0.5).unwrap();
+    app.set_compositing_mode(Some(&cm));
+    let sprite = Sprite3D::new(true, &img, Some(&app));
+    w.add_child(&sprite).unwrap();
+    // The sprite covers viewport x in [0.25, 0.75).
+    assert!(
+        w.pick(-1, 0.4, 0.5, &cam).unwrap().is_none(),
+        "transparent pixel"
+    );
+    assert!(w.pick(-1, 0.8, 0.5, &cam).unwrap().is_none(), "outside");
+    let ri = w.pick(-1, 0.6, 0.5, &cam).unwrap().expect("opaque pixel");
+    assert_eq!(ri.intersected(), Some(sprite.as_node()));
+    assert!((ri.distance() - 0.5).abs() < 1e-4);
+    assert!(
+        w.pick_ray(-1, [0.25, 0.0, 5.0], [0.0, 0.0, -1.0])
+            .unwrap()
+            .is_none(),
+        "ray variant ignores sprites"
+    );
+}
