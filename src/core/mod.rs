@@ -1164,7 +1164,10 @@ mod tests {
             let mut errors = Vec::new();
             for q in [Quality::Fastest, Quality::Balanced, Quality::Nicest] {
                 let mut s = pixel_state(64, 64);
-                s.blend = Some(Blend::func(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha));
+                s.blend = Some(Blend::func(
+                    BlendFactor::SrcAlpha,
+                    BlendFactor::OneMinusSrcAlpha,
+                ));
                 (s.line_smooth, s.point_smooth) = (true, true);
                 (s.line_width, s.point_size) = (2.5, 6.5);
                 (s.line_quality, s.point_quality) = (q, q);
@@ -1172,7 +1175,10 @@ mod tests {
                     color: AttribSource::Constant([1.0, 0.8, 0.3, 1.0]),
                     ..DrawCall::new(
                         prim,
-                        Indices::Range { first: 0, count: 60 },
+                        Indices::Range {
+                            first: 0,
+                            count: 60,
+                        },
                         AttribArray {
                             data: &bytes,
                             ty: ComponentType::Float,

@@ -111,6 +111,8 @@ pub const VERSION: &[u8] =
 /// The extensions `GL_EXTENSIONS` names, one per line (add a line where one starts working).
 const EXTENSION_LIST: &[&str] = &[
     "GL_OES_read_format",
+    "GL_OES_byte_coordinates",
+    "GL_OES_point_size_array",
     "GL_OES_compressed_paletted_texture",
     "GL_OES_mapbuffer",
     "GL_OES_blend_subtract",
@@ -121,6 +123,8 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_matrix_get",
     "GL_OES_matrix_palette",
     "GL_OES_query_matrix",
+    "GL_OES_point_sprite",
+    "GL_OES_texture_mirrored_repeat",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.

@@ -149,7 +149,12 @@ impl Context {
             return self.set_error(GL_INVALID_ENUM);
         }
         let s = &mut self.fragment;
-        (s.blend_src, s.blend_dst, s.blend_src_alpha, s.blend_dst_alpha) = (src, dst, src_a, dst_a);
+        (
+            s.blend_src,
+            s.blend_dst,
+            s.blend_src_alpha,
+            s.blend_dst_alpha,
+        ) = (src, dst, src_a, dst_a);
     }
 
     /// `glBlendEquationSeparateOES` (and `glBlendEquationOES` with one mode for both).
