@@ -112,6 +112,8 @@ pub const VERSION: &[u8] =
 const EXTENSION_LIST: &[&str] = &[
     "GL_OES_read_format",
     "GL_OES_byte_coordinates",
+    "GL_OES_fixed_point",
+    "GL_OES_single_precision",
     "GL_OES_point_size_array",
     "GL_OES_compressed_paletted_texture",
     "GL_OES_mapbuffer",
