@@ -716,7 +716,7 @@ fn decode(format: ColorFormat, word: u32) -> [f32; 4] {
     match format {
         // Every 8-bit byte is its own value; a missing alpha is stored as 255.
         ColorFormat::Rgba8888 | ColorFormat::Rgb888 => bytes.map(|b| b as f32 * INV_255),
-        ColorFormat::Rgb565 => {
+        _ => {
             let bits = format.bits();
             std::array::from_fn(|c| match bits[c] {
                 0 => 1.0,

@@ -13,6 +13,10 @@ pub enum ColorFormat {
     Rgb565,
     Rgb888,
     Rgba8888,
+    /// 4 bits per channel (`OES_framebuffer_object` RGBA4 renderbuffers).
+    Rgba4444,
+    /// 5 bits of red, green and blue, 1 of alpha (RGB5_A1 renderbuffers).
+    Rgba5551,
 }
 
 impl ColorFormat {
@@ -22,6 +26,8 @@ impl ColorFormat {
             ColorFormat::Rgb565 => [5, 6, 5, 0],
             ColorFormat::Rgb888 => [8, 8, 8, 0],
             ColorFormat::Rgba8888 => [8, 8, 8, 8],
+            ColorFormat::Rgba4444 => [4, 4, 4, 4],
+            ColorFormat::Rgba5551 => [5, 5, 5, 1],
         }
     }
 
@@ -35,7 +41,7 @@ impl ColorFormat {
             ColorFormat::Rgb888 => {
                 byte(rgba[0]) | byte(rgba[1]) << 8 | byte(rgba[2]) << 16 | 0xFF00_0000
             }
-            ColorFormat::Rgb565 => self.encode_narrow(rgba),
+            _ => self.encode_narrow(rgba),
         }
     }
 
@@ -279,6 +285,12 @@ impl Target {
     }
     pub fn stencil(&self) -> &[u8] {
         &self.stencil
+    }
+    pub fn depth_mut(&mut self) -> &mut [u32] {
+        &mut self.depth
+    }
+    pub fn stencil_mut(&mut self) -> &mut [u8] {
+        &mut self.stencil
     }
 
     /// The pixel at (x, y) as `[r, g, b, a]` bytes.

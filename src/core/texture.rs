@@ -59,6 +59,9 @@ pub enum PixelType {
     UnsignedShort565,
     UnsignedShort4444,
     UnsignedShort5551,
+    /// `EXT_texture_format_BGRA8888`: GL_BGRA_EXT with GL_UNSIGNED_BYTE (an RGBA image
+    /// with red and blue swapped in client memory).
+    UnsignedByteBgra,
 }
 
 impl PixelType {
@@ -67,6 +70,7 @@ impl PixelType {
     pub fn pixel_size(self, format: BaseFormat) -> Option<usize> {
         match (self, format) {
             (PixelType::UnsignedByte, f) => Some(f.components()),
+            (PixelType::UnsignedByteBgra, BaseFormat::Rgba) => Some(4),
             (PixelType::UnsignedShort565, BaseFormat::Rgb) => Some(2),
             (PixelType::UnsignedShort4444 | PixelType::UnsignedShort5551, BaseFormat::Rgba) => {
                 Some(2)
@@ -123,6 +127,7 @@ fn unpack_pixel(format: BaseFormat, ty: PixelType, p: &[u8]) -> u32 {
             BaseFormat::Rgb => word(p[0], p[1], p[2], 255),
             BaseFormat::Rgba => word(p[0], p[1], p[2], p[3]),
         },
+        PixelType::UnsignedByteBgra => word(p[2], p[1], p[0], p[3]),
         PixelType::UnsignedShort565 => unpack_565(short()),
         PixelType::UnsignedShort4444 => unpack_4444(short()),
         PixelType::UnsignedShort5551 => unpack_5551(short()),
@@ -310,6 +315,21 @@ fn next_generation() -> u64 {
     GENERATION.fetch_add(1, Ordering::Relaxed)
 }
 
+/// Replaces levels 1 .. of `chain` with box-filtered reductions of its level 0.
+fn generate_chain(chain: &mut Vec<Option<Arc<Image>>>) {
+    let Some(mut img) = chain[0].as_deref().cloned() else {
+        return;
+    };
+    for l in 1..chain.len() {
+        if img.width <= 1 && img.height <= 1 {
+            chain[l] = None;
+            continue;
+        }
+        img = img.half();
+        chain[l] = Some(Arc::new(img.clone()));
+    }
+}
+
 /// A 2D texture object.
 #[derive(Clone, Debug)]
 pub struct Texture {
@@ -324,6 +344,10 @@ pub struct Texture {
     /// [`Sampler`] snapshots of pending draws, so a change copies a level rather than
     /// altering what those draws read.
     levels: Vec<Option<Arc<Image>>>,
+    /// `OES_texture_cube_map`: set once the texture was first bound as a cube map. Its
+    /// POSITIVE_X face is `levels`; the other five faces, in the order of the face enums,
+    /// are here.
+    cube: Option<Box<[Vec<Option<Arc<Image>>>; 5]>>,
     version: u64,
 }
 
@@ -345,8 +369,116 @@ impl Texture {
             generate_mipmap: false,
             crop_rect: [0; 4],
             levels: vec![None; MAX_LEVEL + 1],
+            cube: None,
             version: next_generation(),
         }
+    }
+
+    /// A new texture of the cube map kind (`OES_texture_cube_map`).
+    pub fn new_cube_map() -> Texture {
+        Texture {
+            cube: Some(Box::new(std::array::from_fn(|_| vec![None; MAX_LEVEL + 1]))),
+            ..Texture::new()
+        }
+    }
+
+    pub fn is_cube_map(&self) -> bool {
+        self.cube.is_some()
+    }
+
+    /// The level chain of `face`: 0 for a 2D texture, 1 ..= 6 for the cube faces POSITIVE_X,
+    /// NEGATIVE_X, POSITIVE_Y, NEGATIVE_Y, POSITIVE_Z, NEGATIVE_Z. `None` for a face the
+    /// texture does not have.
+    fn chain(&self, face: u8) -> Option<&Vec<Option<Arc<Image>>>> {
+        match (face, &self.cube) {
+            (0, None) | (1, Some(_)) => Some(&self.levels),
+            (2..=6, Some(c)) => Some(&c[face as usize - 2]),
+            _ => None,
+        }
+    }
+
+    fn chain_mut(&mut self, face: u8) -> Option<&mut Vec<Option<Arc<Image>>>> {
+        match (face, &mut self.cube) {
+            (0, None) | (1, Some(_)) => Some(&mut self.levels),
+            (2..=6, Some(c)) => Some(&mut c[face as usize - 2]),
+            _ => None,
+        }
+    }
+
+    /// Level `level` of `face` (see [`Texture::chain`] for face numbers).
+    pub fn face_level(&self, face: u8, level: usize) -> Option<&Image> {
+        self.chain(face)?.get(level)?.as_deref()
+    }
+
+    /// [`Texture::store_rendered`] for a face.
+    pub fn store_rendered_face(&mut self, face: u8, level: usize, texels: &[u32]) -> bool {
+        if face <= 1 {
+            return (face == 0) == self.cube.is_none() && self.store_rendered(level, texels);
+        }
+        let Some(img) = self
+            .chain_mut(face)
+            .and_then(|c| c.get_mut(level))
+            .and_then(Option::as_mut)
+        else {
+            return false;
+        };
+        if img.texels.len() != texels.len() {
+            return false;
+        }
+        let img = Arc::make_mut(img);
+        let format = img.format;
+        for (d, &s) in img.texels.iter_mut().zip(texels) {
+            *d = convert_word(format, s);
+        }
+        self.touch();
+        true
+    }
+
+    /// Replaces level `level` of cube face `face` (1 ..= 6) with `image`; with
+    /// [`Texture::generate_mipmap`] set, a new level 0 regenerates that face's chain.
+    pub fn set_face_level(&mut self, face: u8, level: usize, image: Image) {
+        if face <= 1 {
+            return self.set_level(level, image);
+        }
+        let generate = level == 0 && self.generate_mipmap;
+        if let Some(c) = self.chain_mut(face) {
+            c[level] = Some(Arc::new(image));
+            if generate {
+                generate_chain(c);
+            }
+        }
+        self.touch();
+    }
+
+    /// `glGenerateMipmapOES`: regenerates every face's chain from its level 0. False (and
+    /// nothing changed) when a cube map's faces are not cube complete at level 0 (same
+    /// square size and format).
+    pub fn generate_mipmaps_checked(&mut self) -> bool {
+        if self.cube.is_some() && !self.base_cube_complete() {
+            return false;
+        }
+        self.generate_mipmaps();
+        if let Some(c) = &mut self.cube {
+            c.iter_mut().for_each(generate_chain);
+        }
+        self.touch();
+        true
+    }
+
+    /// Whether the six level-0 images exist, are square, and share size and format.
+    pub fn base_cube_complete(&self) -> bool {
+        let Some(c) = &self.cube else {
+            return false;
+        };
+        let Some(b) = self.level(0) else {
+            return false;
+        };
+        b.width == b.height
+            && b.width > 0
+            && c.iter().all(|f| {
+                matches!(f[0].as_deref(), Some(i)
+                    if (i.width, i.height, i.format) == (b.width, b.height, b.format))
+            })
     }
 
     /// Changes whenever anything about the texture (images or parameters) changes.
@@ -399,6 +531,26 @@ impl Texture {
             self.generate_mipmaps();
         }
         self.touch();
+    }
+
+    /// Overwrites all of `level` with rendered `texels` (a framebuffer object's color
+    /// buffer, RGBA8 words row 0 first), converted to the level's base format. Returns false
+    /// (and changes nothing) when the level is missing or has another texel count. Rendering
+    /// does not trigger `GENERATE_MIPMAP` (`glGenerateMipmapOES` does).
+    pub fn store_rendered(&mut self, level: usize, texels: &[u32]) -> bool {
+        let Some(img) = self.levels.get_mut(level).and_then(Option::as_mut) else {
+            return false;
+        };
+        if img.texels.len() != texels.len() {
+            return false;
+        }
+        let img = Arc::make_mut(img);
+        let format = img.format;
+        for (d, &s) in img.texels.iter_mut().zip(texels) {
+            *d = convert_word(format, s);
+        }
+        self.touch();
+        true
     }
 
     /// Replaces levels 1 ..= log2(max(width, height)) with box-filtered reductions of level
@@ -798,6 +950,97 @@ impl PaletteFormat {
     }
 }
 
+/// `OES_compressed_ETC1_RGB8_texture`: bytes of a `width` × `height` image, 8 per 4 × 4
+/// block (partial blocks at the edges count whole).
+pub fn etc1_size(width: u32, height: u32) -> usize {
+    width.div_ceil(4) as usize * height.div_ceil(4) as usize * 8
+}
+
+/// The ETC1 intensity modifier tables, indexed by the 3-bit table codeword; pixel index
+/// values 0 and 1 add the two entries, 2 and 3 subtract them.
+const ETC1_MODIFIERS: [[i32; 2]; 8] = [
+    [2, 8],
+    [5, 17],
+    [9, 29],
+    [13, 42],
+    [18, 60],
+    [24, 80],
+    [33, 106],
+    [47, 183],
+];
+
+/// Decodes one 64-bit ETC1 block (read big-endian) into 16 RGB texels, `out[y * 4 + x]`.
+pub fn etc1_block(block: [u8; 8]) -> [[u8; 3]; 16] {
+    let hi = u32::from_be_bytes([block[0], block[1], block[2], block[3]]);
+    let lo = u32::from_be_bytes([block[4], block[5], block[6], block[7]]);
+    let diff = hi & 2 != 0;
+    let flip = hi & 1 != 0;
+    // Base colors of the two subblocks, 8 bits per channel.
+    let mut base = [[0i32; 3]; 2];
+    for c in 0..3 {
+        let shift = 24 - 8 * c as u32;
+        if diff {
+            let b1 = (hi >> (shift + 3)) & 31;
+            let d = ((hi >> shift) & 7) as i32;
+            let d = if d >= 4 { d - 8 } else { d };
+            let b2 = (b1 as i32 + d) & 31;
+            base[0][c] = expand_to_8(b1, 5) as i32;
+            base[1][c] = expand_to_8(b2 as u32, 5) as i32;
+        } else {
+            base[0][c] = expand_to_8((hi >> (shift + 4)) & 15, 4) as i32;
+            base[1][c] = expand_to_8((hi >> shift) & 15, 4) as i32;
+        }
+    }
+    let tables = [(hi >> 5) & 7, (hi >> 2) & 7];
+    let mut out = [[0u8; 3]; 16];
+    for x in 0..4 {
+        for y in 0..4 {
+            let sub = if flip { (y >= 2) as usize } else { (x >= 2) as usize };
+            let i = x * 4 + y;
+            let msb = (lo >> (16 + i)) & 1;
+            let lsb = (lo >> i) & 1;
+            let m = ETC1_MODIFIERS[tables[sub] as usize];
+            let modifier = match (msb << 1) | lsb {
+                0 => m[0],
+                1 => m[1],
+                2 => -m[0],
+                _ => -m[1],
+            };
+            out[y * 4 + x] = base[sub].map(|b| (b + modifier).clamp(0, 255) as u8);
+        }
+    }
+    out
+}
+
+/// Decodes an ETC1 image of exactly [`etc1_size`] bytes into an RGB level, or `None` when
+/// `data` has another size.
+pub fn decode_etc1(width: u32, height: u32, data: &[u8]) -> Option<Image> {
+    if data.len() != etc1_size(width, height) {
+        return None;
+    }
+    let mut texels = vec![0u32; width as usize * height as usize];
+    let blocks_x = width.div_ceil(4) as usize;
+    for (n, b) in data.chunks_exact(8).enumerate() {
+        let (bx, by) = (n % blocks_x * 4, n / blocks_x * 4);
+        let px = etc1_block(b.try_into().expect("8 bytes"));
+        for y in 0..4 {
+            for x in 0..4 {
+                let (tx, ty) = (bx + x, by + y);
+                if tx < width as usize && ty < height as usize {
+                    let [r, g, b] = px[y * 4 + x];
+                    texels[ty * width as usize + tx] = word(r, g, b, 255);
+                }
+            }
+        }
+    }
+    Some(Image {
+        width,
+        height,
+        format: BaseFormat::Rgb,
+        texels,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -836,6 +1079,46 @@ mod tests {
             &0x07c0u16.to_ne_bytes(),
         );
         assert_eq!(p[0].to_le_bytes(), [0, 255, 0, 0]);
+    }
+
+    #[test]
+    fn etc1_individual_and_differential_blocks() {
+        // Individual mode, no flip: left subblock base (0x1, 0x2, 0x3) -> (17, 34, 51) with
+        // table 0, right subblock base (0xf, 0xe, 0xd) with table 7. All indices 0 (+a)
+        // except pixel (x=1, y=2): index 3 (-b); pixel (x=3, y=0): index 1 (+b).
+        let hi: u32 = 0x1f << 24 | 0x2e << 16 | 0x3d << 8 | (7 << 2);
+        let i_12 = 1 * 4 + 2;
+        let i_30 = 3 * 4;
+        let lo: u32 = (1 << (16 + i_12)) | (1 << i_12) | (1 << i_30);
+        let mut b = [0u8; 8];
+        b[..4].copy_from_slice(&hi.to_be_bytes());
+        b[4..].copy_from_slice(&lo.to_be_bytes());
+        let px = etc1_block(b);
+        assert_eq!(px[0], [19, 36, 53]); // (0, 0): +2
+        assert_eq!(px[2 * 4 + 1], [9, 26, 43]); // (1, 2): -8
+        assert_eq!(px[0 * 4 + 2], [255, 255, 255]); // (2, 0): 0xff.. + 47, clamped
+        assert_eq!(px[3], [255, 255, 255]); // (3, 0): +183 clamped
+        // Differential mode with flip: top base 5-bit (16, 8, 4), delta (-1, +3, 0).
+        let hi: u32 = (16 << 3 | 7) << 24 | (8 << 3 | 3) << 16 | (4 << 3) << 8 | 3;
+        b[..4].copy_from_slice(&hi.to_be_bytes());
+        b[4..].copy_from_slice(&0u32.to_be_bytes());
+        let px = etc1_block(b);
+        let e = |v: u32| expand_to_8(v, 5) as i32 + 2;
+        assert_eq!(px[0], [e(16) as u8, e(8) as u8, e(4) as u8]);
+        assert_eq!(px[3 * 4 + 3], [e(15) as u8, e(11) as u8, e(4) as u8]);
+        // Sizes: partial blocks count whole; a 2 × 2 image keeps its top-left texels.
+        assert_eq!(etc1_size(4, 4), 8);
+        assert_eq!(etc1_size(5, 1), 16);
+        let img = decode_etc1(2, 2, &b).unwrap();
+        assert_eq!(img.texel(1, 1), [e(16) as u8, e(8) as u8, e(4) as u8, 255]);
+        assert!(decode_etc1(8, 8, &b).is_none());
+    }
+
+    #[test]
+    fn bgra_swaps_red_and_blue() {
+        let rect = PixelRect::new(1, 1, 4, 1).unwrap();
+        let p = unpack(BaseFormat::Rgba, PixelType::UnsignedByteBgra, rect, &[1, 2, 3, 4]);
+        assert_eq!(p[0].to_le_bytes(), [3, 2, 1, 4]);
     }
 
     #[test]

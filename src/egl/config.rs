@@ -71,7 +71,10 @@ pub fn native_format(color: ColorFormat) -> EGLint {
     match color {
         ColorFormat::Rgb565 => EGL_MEMORY_RGB565,
         ColorFormat::Rgb888 => EGL_MEMORY_RGB888,
-        ColorFormat::Rgba8888 => EGL_MEMORY_RGBA8888,
+        // Renderbuffer-only formats: no config has them.
+        ColorFormat::Rgba8888 | ColorFormat::Rgba4444 | ColorFormat::Rgba5551 => {
+            EGL_MEMORY_RGBA8888
+        }
     }
 }
 
@@ -81,6 +84,7 @@ pub fn memory_format_matches(format: EGLint, color: ColorFormat) -> bool {
         ColorFormat::Rgb565 => format == EGL_MEMORY_RGB565,
         ColorFormat::Rgb888 => format == EGL_MEMORY_RGB888,
         ColorFormat::Rgba8888 => format == EGL_MEMORY_RGBA8888 || format == EGL_MEMORY_BGRA8888,
+        ColorFormat::Rgba4444 | ColorFormat::Rgba5551 => false,
     }
 }
 

@@ -219,6 +219,10 @@ impl Context {
     }
 
     fn draw(&mut self, primitive: Primitive, indices: Indices<'_>) {
+        // An incomplete framebuffer object draws nothing (and says so).
+        if !self.framebuffer_ready() {
+            return;
+        }
         let Some((_, hi)) = indices.range() else {
             return;
         };

@@ -39,6 +39,8 @@ pub trait Surface: Send + Sync {
 pub struct SharedObjects {
     pub textures: super::texture::TextureNames,
     pub buffers: super::buffer::BufferNames,
+    /// `OES_framebuffer_object` renderbuffers (framebuffer objects are per context).
+    pub renderbuffers: super::fbo::RenderbufferNames,
 }
 
 pub const MAX_TEXTURE_UNITS: usize = crate::core::TEXTURE_UNITS;
@@ -187,6 +189,8 @@ pub struct Context {
     pub(super) buffers: super::buffer::BufferBindings,
     /// Work recorded for the draw surface and not yet rasterized.
     pub(super) frame: Option<Frame>,
+    /// Framebuffer objects, bindings and the bound one's assembled target.
+    pub(super) fbo: super::fbo::FramebufferState,
 }
 
 impl Context {
@@ -248,6 +252,7 @@ impl Context {
             textures: Default::default(),
             buffers: Default::default(),
             frame: None,
+            fbo: Default::default(),
         }
     }
 
@@ -288,9 +293,17 @@ impl Context {
         }
     }
 
-    /// Rasterizes all recorded work into the draw surface.
+    /// Rasterizes all recorded work into the draw surface (or the bound framebuffer
+    /// object, whose attachments then receive it). The share group must not be locked.
     pub fn flush(&mut self) {
-        if let (Some(frame), Some(d)) = (&mut self.frame, &self.draw) {
+        self.flush_frame();
+        self.fbo_write_back();
+    }
+
+    /// Rasterizes all recorded work into the surface it was recorded for.
+    fn flush_frame(&mut self) {
+        let d = self.draw_surface();
+        if let (Some(frame), Some(d)) = (&mut self.frame, d) {
             if !frame.is_empty() {
                 frame.flush(&mut lock_target(d.as_ref()), bin::thread_count());
             }
@@ -300,7 +313,8 @@ impl Context {
     /// Runs `f` with the frame that records work for the draw surface (created to fit it),
     /// flushing first when the frame is full. `None` without a draw surface.
     pub(super) fn with_frame<R>(&mut self, f: impl FnOnce(&mut Frame) -> R) -> Option<R> {
-        let surface = self.draw.clone()?;
+        let surface = self.draw_surface()?;
+        self.fbo.dirty |= self.fbo.bound != 0;
         let fits = {
             let t = lock_target(surface.as_ref());
             match &self.frame {
@@ -312,14 +326,15 @@ impl Context {
             }
         };
         if fits && self.frame.as_ref().is_some_and(Frame::is_full) {
-            self.flush();
+            // Only rasterize: the caller may hold the share group's lock.
+            self.flush_frame();
         }
         self.frame.as_mut().map(f)
     }
 
-    /// The format of the draw surface, if one is bound.
+    /// The format of what draws go to (the bound framebuffer object or the draw surface).
     pub fn draw_format(&self) -> Option<TargetFormat> {
-        self.draw.as_ref().map(|d| lock_target(d.as_ref()).format())
+        self.current_draw_format()
     }
 
     /// Records `e` unless an earlier error is still unread (the first error sticks).

@@ -24,12 +24,22 @@ impl Context {
         if mask & !(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT) != 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
+        if !self.framebuffer_ready() {
+            return;
+        }
         let state = self.render_state();
         let (color, depth, stencil) = (self.clear_color, self.clear_depth, self.clear_stencil);
         let (color_mask, depth_mask, stencil_mask) =
             (self.color_mask, self.depth_mask, self.stencil_writemask);
         self.with_frame(|frame| {
             let rect = state.pixel_bounds(frame.bounds());
+            // A scissor box wholly outside the surface leaves an empty rect whose corners
+            // may be negative (glScissor(INT_MIN, 0, 5, 5)); the band code indexes rows with
+            // them as usize and panicked on a rasterizer thread. Nothing to clear then.
+            // (Found by c_tests/conf_fuzz.c.)
+            if rect.is_empty() {
+                return;
+            }
             let format = frame.format();
             if mask & GL_COLOR_BUFFER_BIT != 0 {
                 frame.clear_color(rect, format.color.encode(color), keep_mask(color_mask));
@@ -48,11 +58,14 @@ impl Context {
 
     /// The implementation-chosen read format and type (`OES_read_format`) for the read surface.
     pub fn implementation_read_format(&self) -> (GLenum, GLenum) {
-        let format = self
-            .read
-            .as_ref()
-            .map(|r| lock_target(r.as_ref()).format().color);
+        let format = if self.fbo.bound != 0 {
+            self.current_draw_format().map(|f| f.color)
+        } else {
+            self.read.as_ref().map(|r| lock_target(r.as_ref()).format().color)
+        };
         match format {
+            Some(ColorFormat::Rgba4444) => (GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4),
+            Some(ColorFormat::Rgba5551) => (GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1),
             Some(ColorFormat::Rgb565) => (GL_RGB, GL_UNSIGNED_SHORT_5_6_5),
             Some(ColorFormat::Rgb888) => (GL_RGB, GL_UNSIGNED_BYTE),
             Some(ColorFormat::Rgba8888) | None => (GL_RGBA, GL_UNSIGNED_BYTE),
@@ -124,9 +137,12 @@ impl Context {
         layout: PixelLayout,
         out: &mut [u8],
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         // The read surface may be the draw surface: its pending work must land first.
         self.flush();
-        let Some(surface) = self.read.clone() else {
+        let Some(surface) = self.read_surface() else {
             return;
         };
         let t = lock_target(surface.as_ref());
@@ -151,6 +167,17 @@ fn read_rect(t: &Target, x: i32, y: i32, w: i32, h: i32, layout: PixelLayout, ou
             match (layout.format, layout.ty) {
                 (GL_RGBA, GL_UNSIGNED_BYTE) => dst.copy_from_slice(&px),
                 (GL_RGB, GL_UNSIGNED_BYTE) => dst.copy_from_slice(&px[..3]),
+                (GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4) => {
+                    let q = |v: u8| (v as u32 * 15 + 127) / 255;
+                    let v = q(px[0]) << 12 | q(px[1]) << 8 | q(px[2]) << 4 | q(px[3]);
+                    dst.copy_from_slice(&(v as u16).to_ne_bytes());
+                }
+                (GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1) => {
+                    let q = |v: u8| (v as u32 * 31 + 127) / 255;
+                    let a = (px[3] >= 128) as u32;
+                    let v = q(px[0]) << 11 | q(px[1]) << 6 | q(px[2]) << 1 | a;
+                    dst.copy_from_slice(&(v as u16).to_ne_bytes());
+                }
                 _ => {
                     let q = |v: u8, bits: u32| (v as u32 * ((1 << bits) - 1) + 127) / 255;
                     let v = (q(px[0], 5) << 11) | (q(px[1], 6) << 5) | q(px[2], 5);

@@ -127,6 +127,9 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_query_matrix",
     "GL_OES_point_sprite",
     "GL_OES_texture_mirrored_repeat",
+    "GL_OES_framebuffer_object",
+    "GL_OES_compressed_ETC1_RGB8_texture",
+    "GL_EXT_texture_format_BGRA8888",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
@@ -169,6 +172,7 @@ impl Context {
             .or_else(|| self.current_values_value(pname))
             .or_else(|| self.texture_value(pname))
             .or_else(|| self.buffer_value(pname))
+            .or_else(|| self.fbo_value(pname))
         {
             return Some(v);
         }

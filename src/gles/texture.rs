@@ -40,6 +40,10 @@ impl TextureNames {
         self.objects.get(&name)?.as_ref()
     }
 
+    pub fn get_mut(&mut self, name: GLuint) -> Option<&mut Texture> {
+        self.objects.get_mut(&name)?.as_mut()
+    }
+
     /// The texture called `name`, created if the name is unused or only generated.
     fn get_or_create(&mut self, name: GLuint) -> &mut Texture {
         self.objects
@@ -60,15 +64,29 @@ impl TextureNames {
 }
 
 /// A context's texture bindings and its default texture.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct TextureUnits {
     /// The name bound to `GL_TEXTURE_2D` on each unit (0: the default texture).
     pub bound: [GLuint; MAX_TEXTURE_UNITS],
     pub default: Texture,
+    /// The name bound to `GL_TEXTURE_CUBE_MAP_OES` on each unit, and the default cube map.
+    pub bound_cube: [GLuint; MAX_TEXTURE_UNITS],
+    pub default_cube: Texture,
+}
+
+impl Default for TextureUnits {
+    fn default() -> Self {
+        TextureUnits {
+            bound: [0; MAX_TEXTURE_UNITS],
+            default: Texture::new(),
+            bound_cube: [0; MAX_TEXTURE_UNITS],
+            default_cube: Texture::new_cube_map(),
+        }
+    }
 }
 
 /// The compressed formats `glGetIntegerv(GL_COMPRESSED_TEXTURE_FORMATS)` lists.
-pub const COMPRESSED_FORMATS: [GLenum; 10] = [
+pub const COMPRESSED_FORMATS: [GLenum; 11] = [
     GL_PALETTE4_RGB8_OES,
     GL_PALETTE4_RGBA8_OES,
     GL_PALETTE4_R5_G6_B5_OES,
@@ -79,7 +97,16 @@ pub const COMPRESSED_FORMATS: [GLenum; 10] = [
     GL_PALETTE8_R5_G6_B5_OES,
     GL_PALETTE8_RGBA4_OES,
     GL_PALETTE8_RGB5_A1_OES,
+    GL_ETC1_RGB8_OES,
 ];
+
+/// The compressed formats `glCompressedTexImage2D` takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Compressed {
+    Palette(PaletteFormat),
+    /// `OES_compressed_ETC1_RGB8_texture`, decoded to RGB on upload.
+    Etc1,
+}
 
 /// A validated `glTexImage2D` / `glTexSubImage2D` request: where the texels go and how the
 /// client memory is laid out (`rect.len` bytes are read when pixels are given).
@@ -124,8 +151,21 @@ fn pixel_type(ty: GLenum) -> Option<PixelType> {
     })
 }
 
+/// The base format and client type of a `format`, `type` pair: the ES 1.1 formats, and
+/// `GL_BGRA_EXT` (`EXT_texture_format_BGRA8888`, with `GL_UNSIGNED_BYTE` only).
+fn client_format(format: GLenum, ty: GLenum) -> Result<(BaseFormat, PixelType), GLenum> {
+    let t = pixel_type(ty).ok_or(GL_INVALID_ENUM)?;
+    if format == GL_BGRA_EXT {
+        return match t {
+            PixelType::UnsignedByte => Ok((BaseFormat::Rgba, PixelType::UnsignedByteBgra)),
+            _ => Err(GL_INVALID_OPERATION),
+        };
+    }
+    Ok((base_format(format).ok_or(GL_INVALID_ENUM)?, t))
+}
+
 pub fn palette_format(format: GLenum) -> Option<PaletteFormat> {
-    let i = COMPRESSED_FORMATS.iter().position(|&f| f == format)?;
+    let i = COMPRESSED_FORMATS[..10].iter().position(|&f| f == format)?;
     let entry = [
         PaletteEntry::Rgb8,
         PaletteEntry::Rgba8,
@@ -193,7 +233,11 @@ impl Context {
     /// Called before a texture changes. Recorded draws hold snapshots of the images they
     /// sample ([`Texture::sampler`]; a changed level is copied, not altered in place), so
     /// no flush is needed: pending draws keep seeing the contents they were recorded with.
-    fn texture_changing(&mut self) {}
+    /// With a framebuffer object bound, its pending rendering lands in its attachments first
+    /// (they may be this texture).
+    fn texture_changing(&mut self) {
+        self.fbo_texture_changing();
+    }
 
     /// A snapshot of the texture bound to `unit` for sampling, `None` when it is incomplete
     /// (or was deleted by another context of the share group).
@@ -218,6 +262,28 @@ impl Context {
             let shared = self.shared.clone();
             let mut o = lock_objects(&shared);
             f(o.textures.get_or_create(name))
+        }
+    }
+
+    /// Runs `f` on the texture bound to the active unit's cube map target (`cube`) or 2D
+    /// target.
+    pub fn with_target_texture<R>(&mut self, cube: bool, f: impl FnOnce(&mut Texture) -> R) -> R {
+        if !cube {
+            return self.with_bound_texture(f);
+        }
+        let name = self.textures.bound_cube[self.active_texture];
+        if name == 0 {
+            f(&mut self.textures.default_cube)
+        } else {
+            let shared = self.shared.clone();
+            let mut o = lock_objects(&shared);
+            let t = o
+                .textures
+                .objects
+                .entry(name)
+                .or_insert(None)
+                .get_or_insert_with(Texture::new_cube_map);
+            f(t)
         }
     }
 
@@ -247,12 +313,19 @@ impl Context {
             if name == 0 || o.textures.objects.remove(&name).is_none() {
                 continue;
             }
-            for b in &mut self.textures.bound {
+            for b in self
+                .textures
+                .bound
+                .iter_mut()
+                .chain(self.textures.bound_cube.iter_mut())
+            {
                 if *b == name {
                     *b = 0;
                 }
             }
         }
+        drop(o);
+        self.textures_deleted(names);
     }
 
     pub fn bind_texture(&mut self, target: GLenum, name: GLuint) {
@@ -436,14 +509,16 @@ impl Context {
         if target != GL_TEXTURE_2D {
             return Err(GL_INVALID_ENUM);
         }
-        let (Some(f), Some(t)) = (base_format(format), pixel_type(ty)) else {
-            return Err(GL_INVALID_ENUM);
-        };
-        let internal = u32::try_from(internal_format).ok().and_then(base_format);
+        let (f, t) = client_format(format, ty)?;
+        let internal = u32::try_from(internal_format)
+            .ok()
+            .and_then(|i| if i == GL_BGRA_EXT { Some(BaseFormat::Rgba) } else { base_format(i) });
         if internal.is_none() || !valid_image_size(level, width, height) || border != 0 {
             return Err(GL_INVALID_VALUE);
         }
-        if internal != Some(f) {
+        // The internal format must be the format (BGRA with BGRA).
+        if internal != Some(f) || (internal_format as u32 == GL_BGRA_EXT) != (format == GL_BGRA_EXT)
+        {
             return Err(GL_INVALID_OPERATION);
         }
         let size = t.pixel_size(f).ok_or(GL_INVALID_OPERATION)?;
@@ -492,9 +567,7 @@ impl Context {
         if target != GL_TEXTURE_2D {
             return Err(GL_INVALID_ENUM);
         }
-        let (Some(f), Some(t)) = (base_format(format), pixel_type(ty)) else {
-            return Err(GL_INVALID_ENUM);
-        };
+        let (f, t) = client_format(format, ty)?;
         let level_format = self.check_sub_region(level, x, y, width, height)?;
         if level_format != f {
             return Err(GL_INVALID_OPERATION);
@@ -561,9 +634,20 @@ impl Context {
         height: i32,
         border: i32,
         image_size: i32,
-    ) -> Result<(PaletteFormat, usize), GLenum> {
+    ) -> Result<(Compressed, usize), GLenum> {
         if target != GL_TEXTURE_2D {
             return Err(GL_INVALID_ENUM);
+        }
+        if internal_format == GL_ETC1_RGB8_OES {
+            // One level per call; the size must be the blocks' (8 bytes per 4 × 4 block).
+            if !valid_image_size(level, width, height) || border != 0 || image_size < 0 {
+                return Err(GL_INVALID_VALUE);
+            }
+            let size = crate::core::texture::etc1_size(width as u32, height as u32);
+            if image_size as usize != size {
+                return Err(GL_INVALID_VALUE);
+            }
+            return Ok((Compressed::Etc1, level as usize));
         }
         let Some(f) = palette_format(internal_format) else {
             return Err(GL_INVALID_ENUM);
@@ -585,19 +669,30 @@ impl Context {
         if image_size as usize != f.image_size(width as u32, height as u32, levels) {
             return Err(GL_INVALID_VALUE);
         }
-        Ok((f, levels))
+        Ok((Compressed::Palette(f), levels))
     }
 
     /// Specifies levels 0 .. `levels` from a paletted blob (`None`: contents zeroed).
+    /// For ETC1, `levels` is the level number.
     pub fn compressed_tex_image_2d(
         &mut self,
-        format: PaletteFormat,
+        format: Compressed,
         levels: usize,
         width: i32,
         height: i32,
         data: Option<&[u8]>,
     ) {
         let (w, h) = (width as u32, height as u32);
+        let format = match format {
+            Compressed::Palette(f) => f,
+            Compressed::Etc1 => {
+                let image = data
+                    .and_then(|d| crate::core::texture::decode_etc1(w, h, d))
+                    .unwrap_or_else(|| Image::blank(w, h, BaseFormat::Rgb));
+                self.texture_changing();
+                return self.with_bound_texture(|t| t.set_level(levels, image));
+            }
+        };
         let images = match data.and_then(|d| format.decode(w, h, levels, d)) {
             Some(images) => images,
             None => {
@@ -642,7 +737,9 @@ impl Context {
         format: GLenum,
         image_size: i32,
     ) {
-        if target != GL_TEXTURE_2D || palette_format(format).is_none() {
+        if target != GL_TEXTURE_2D
+            || (palette_format(format).is_none() && format != GL_ETC1_RGB8_OES)
+        {
             return self.set_error(GL_INVALID_ENUM);
         }
         if !(0..=MAX_LEVEL as i32).contains(&level)
@@ -659,8 +756,11 @@ impl Context {
 
     /// The read surface's color format, flushing its pending rendering first.
     fn read_color_format(&mut self) -> Option<ColorFormat> {
+        if !self.framebuffer_ready() {
+            return None;
+        }
         self.flush();
-        let r = self.read.clone()?;
+        let r = self.read_surface()?;
         let f = lock_target(r.as_ref()).format().color;
         Some(f)
     }
@@ -693,7 +793,7 @@ impl Context {
         if !copy_compatible(color, format) {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        let r = self.read.clone().expect("checked");
+        let r = self.read_surface().expect("checked");
         let texels = read_region(
             &lock_target(r.as_ref()),
             x,
@@ -741,7 +841,7 @@ impl Context {
         if width == 0 || height == 0 {
             return;
         }
-        let r = self.read.clone().expect("checked");
+        let r = self.read_surface().expect("checked");
         let texels = read_region(
             &lock_target(r.as_ref()),
             x,

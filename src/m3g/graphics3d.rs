@@ -5,10 +5,15 @@
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::rc::Rc;
+use std::sync::Arc;
 
-use glam::{Mat3, Mat4, Vec3, Vec4};
+use glam::{Mat4, Vec3, Vec4};
 
-use crate::core::state::{AlphaTest, Blend, BlendFactor};
+use crate::core::state::{
+    AlphaTest, Blend, BlendFactor, Light as CoreLight, Lighting, Material as CoreMaterial,
+};
+use crate::core::texenv::{self, EnvMode, FogMode, TexEnv, TextureUnit};
+use crate::core::texture::{BaseFormat, Image as TexImage, MagFilter, MinFilter, Sampler, Wrap};
 use crate::core::{
     self, AttribArray, AttribSource, ColorFormat, CompareFunc, CullFace, DepthFormat, DrawCall,
     Frame, Indices, Primitive, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport,
@@ -16,16 +21,17 @@ use crate::core::{
 };
 
 use super::appearance::{
-    Appearance, Background, CompositingMode, MaterialData, PolygonMode, MAX_TEXTURE_DIMENSION,
+    Appearance, Background, CompositingMode, Fog, FogData, MaterialData, PolygonMode, Texture2D,
+    TextureData, MAX_TEXTURE_DIMENSION,
 };
 use super::error::{iae, ioobe, ise, Result};
-use super::image::Image2D;
+use super::image::{Image2D, ImageData};
 use super::mesh::{Mesh, Sprite3D, MAX_SPRITE_CROP_DIMENSION};
-use super::node::{local, node_data, root_of, to_ancestor, NodeExt, World};
+use super::node::{node_data, root_of, to_ancestor, NodeExt, World};
 use super::nodes::{Camera, Light};
-use super::object::{Handle, Kind, ObjRef};
+use super::object::{tf, Handle, Kind, ObjRef};
 use super::transform::{invert, Transform};
-use super::vertex::{IndexBuffer, VertexBuffer, NUM_TEXTURE_UNITS};
+use super::vertex::{IndexBuffer, VertexBuffer, VertexBufferData, NUM_TEXTURE_UNITS};
 
 /// The largest viewport and target width and height.
 pub const MAX_VIEWPORT_DIMENSION: i32 = core::MAX_VIEWPORT_DIM as i32;
@@ -49,17 +55,11 @@ struct Bound {
     hints: i32,
 }
 
-/// A light as rendering uses it, in eye coordinates.
+/// A light as the core takes it (eye coordinates, intensity folded into the colors) with
+/// the scope of its node.
 #[derive(Clone, Copy, Debug)]
 struct EyeLight {
-    mode: i32,
-    color: Vec3,
-    position: Vec3,
-    /// Directional: the direction towards the light. Spot: the direction it points.
-    direction: Vec3,
-    attenuation: [f32; 3],
-    cos_cutoff: f32,
-    exponent: f32,
+    light: CoreLight,
     scope: i32,
 }
 
@@ -71,6 +71,45 @@ struct Item {
     model: Mat4,
     alpha: f32,
     scope: i32,
+    /// Whether the item may be culled against its bounds (a plain Mesh's submesh or an
+    /// immediate-mode submesh; deformed meshes are not, as their base bounds do not hold).
+    cullable: bool,
+}
+
+/// What rendering has done since the context was made or [`Graphics3D::reset_stats`] was
+/// called (a Rust extension, for tests and profiling).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RenderStats {
+    /// Submeshes handed to the core.
+    pub submeshes_drawn: u64,
+    /// Submeshes skipped because their bounding sphere lies outside the view frustum.
+    pub submeshes_culled: u64,
+    /// Vertices handed to the core to transform: the index range of every drawn submesh.
+    pub vertices_transformed: u64,
+    /// Texture images converted into core textures (again only when the image contents,
+    /// filters or wrapping change).
+    pub texture_uploads: u64,
+}
+
+/// A texture image converted for the core, with what it was made from.
+struct TexEntry {
+    /// Keeps the image alive, so its address (the key) is not reused.
+    _image: Image2D,
+    /// The pixels converted, for a mutable image (whose contents may change in place).
+    pixels: Option<Vec<u8>>,
+    sampler: Arc<Sampler>,
+    /// The render call that last used it.
+    used: u64,
+}
+
+type TexKey = (usize, MinFilter, MagFilter, Wrap, Wrap);
+
+/// The core textures of the Texture2D images in use, kept across render calls.
+#[derive(Default)]
+struct TexCache {
+    entries: HashMap<TexKey, TexEntry>,
+    /// Render calls so far.
+    calls: u64,
 }
 
 enum What {
@@ -97,12 +136,33 @@ enum What {
 /// | `setCamera` / `getCamera` | [`set_camera`](Self::set_camera) / [`camera`](Self::camera) |
 /// | `addLight` / `setLight` / `resetLights` / `getLightCount` / `getLight` | [`add_light`](Self::add_light) / [`set_light`](Self::set_light) / [`reset_lights`](Self::reset_lights) / [`light_count`](Self::light_count) / [`light`](Self::light) |
 /// | `getProperties()` | [`get_properties`](Self::get_properties) |
+///
+/// # Rendering
+///
+/// Every rendering semantic comes from the core: an Appearance becomes a `RenderState`
+/// (CompositingMode, PolygonMode, the Material as `core` lighting with zero scene ambient,
+/// vertex color tracking as color material and two-sided lighting from the PolygonMode;
+/// Fog as the core's per-pixel fog; each Texture2D as a texture unit with its blending
+/// function, blend color, wrapping, filters and generated mipmaps, and its T·R·S·M after
+/// the coordinates' scale and bias in the texture matrix) and a VertexBuffer a `DrawCall`.
+/// The alpha factor multiplies the material's diffuse alpha, or the vertex alpha when
+/// there is no Material or it tracks vertex colors. Local camera lighting is not supported
+/// (`supportLocalCameraLighting` is false: the core's lighting has the viewer at infinity,
+/// as M3G's default); perspective correction is always exact.
+///
+/// Scene graphs: node-to-world transforms and the bounds of position arrays are cached
+/// with dirty flags, and a submesh whose bounding sphere lies outside the view frustum is
+/// skipped before any of its vertices is transformed ([`stats`](Self::stats) counts both;
+/// [`set_culling_enable`](Self::set_culling_enable) turns culling off).
 pub struct Graphics3D {
     bound: Option<Bound>,
     viewport: [i32; 4],
     depth_range: [f32; 2],
     camera: Option<(Camera, Mat4)>,
     lights: Vec<Option<(Light, Mat4)>>,
+    culling: bool,
+    stats: RenderStats,
+    textures: TexCache,
 }
 
 impl Default for Graphics3D {
@@ -133,7 +193,31 @@ impl Graphics3D {
             depth_range: [0.0, 1.0],
             camera: None,
             lights: Vec::new(),
+            culling: true,
+            stats: RenderStats::default(),
+            textures: TexCache::default(),
         }
+    }
+
+    /// Turns view-frustum culling of submeshes on (the default) or off (a Rust extension:
+    /// the pixels are the same either way; culling only skips work).
+    pub fn set_culling_enable(&mut self, enable: bool) {
+        self.culling = enable;
+    }
+
+    /// Whether view-frustum culling is on.
+    pub fn is_culling_enabled(&self) -> bool {
+        self.culling
+    }
+
+    /// What rendering has done so far (a Rust extension).
+    pub fn stats(&self) -> RenderStats {
+        self.stats
+    }
+
+    /// Sets every counter of [`stats`](Self::stats) to 0.
+    pub fn reset_stats(&mut self) {
+        self.stats = RenderStats::default();
     }
 
     /// `getInstance()`: the same context every time (per thread: M3G objects are not `Send`).
@@ -366,7 +450,7 @@ impl Graphics3D {
             ("supportAntialiasing", Bool(false)),
             ("supportTrueColor", Bool(false)),
             ("supportDithering", Bool(true)),
-            ("supportMipmapping", Bool(false)),
+            ("supportMipmapping", Bool(true)),
             ("supportPerspectiveCorrection", Bool(true)),
             ("supportLocalCameraLighting", Bool(false)),
             ("maxLights", Int(MAX_LIGHTS as i32)),
@@ -375,7 +459,7 @@ impl Graphics3D {
             ("maxViewportDimension", Int(MAX_VIEWPORT_DIMENSION)),
             ("maxTextureDimension", Int(MAX_TEXTURE_DIMENSION)),
             ("maxSpriteCropDimension", Int(MAX_SPRITE_CROP_DIMENSION)),
-            ("maxTransformsPerVertex", Int(2)),
+            ("maxTransformsPerVertex", Int(4)),
             ("numTextureUnits", Int(NUM_TEXTURE_UNITS as i32)),
         ])
     }
@@ -584,6 +668,7 @@ impl Graphics3D {
             model: t.map_or(Mat4::IDENTITY, |t| t.m),
             alpha: 1.0,
             scope,
+            cullable: true,
         };
         let r = self.draw_items(vec![item]);
         self.flush();
@@ -601,25 +686,47 @@ impl Graphics3D {
         let lights = self.eye_lights(&view);
         items.sort_by_key(|i| (i.layer, i.blended));
         let base = self.base_state(projection);
-        let b = self.bound.as_mut().unwrap();
+        let Graphics3D {
+            bound,
+            culling,
+            stats,
+            textures,
+            ..
+        } = self;
+        let b = bound.as_mut().unwrap();
+        textures.calls += 1;
         for item in &items {
             let mut s = base.clone();
+            let modelview = view * item.model;
             match &item.what {
                 What::Submesh(vb, ib, app) => {
-                    s.modelview = view * item.model;
-                    draw_submesh(&mut s, b, vb, ib, app, item, &lights);
+                    if *culling && item.cullable && outside_frustum(&vb.d(), modelview, projection)
+                    {
+                        stats.submeshes_culled += 1;
+                        continue;
+                    }
+                    s.modelview = modelview;
+                    draw_submesh(&mut s, b, textures, stats, vb, ib, app, item, &lights);
                 }
                 What::Sprite(sprite, app) => {
-                    draw_sprite(&s, b, sprite, app, view * item.model, item.alpha);
+                    draw_sprite(&s, b, sprite, app, modelview, item.alpha);
                 }
             }
             if b.frame.is_full() {
                 b.frame.flush(&mut b.target, core::bin::thread_count());
             }
         }
+        // Textures unused for a while are dropped.
+        let calls = textures.calls;
+        textures
+            .entries
+            .retain(|_, e| calls.saturating_sub(e.used) < 16);
         Ok(())
     }
 
+    /// The enabled lights of the light array in eye coordinates, as core lights (M3G §2.6:
+    /// the intensity scales the colors; AMBIENT has only an ambient color, the others only
+    /// diffuse and specular; directional lights shine along their local −Z).
     fn eye_lights(&self, view: &Mat4) -> Vec<EyeLight> {
         let mut out = Vec::new();
         for (light, m) in self.lights.iter().flatten() {
@@ -629,19 +736,34 @@ impl Graphics3D {
             }
             let d = light.d();
             let mv = *view * *m;
-            let rgb = argb_to_rgba(d.color);
+            let [r, g, b, _] = argb_to_rgba(d.color);
+            let color = (Vec3::new(r, g, b) * d.intensity).extend(1.0);
+            let black = Vec4::new(0.0, 0.0, 0.0, 1.0);
+            let mut l = CoreLight {
+                ambient: black,
+                diffuse: color,
+                specular: color,
+                ..CoreLight::default()
+            };
+            match d.mode {
+                Light::AMBIENT => {
+                    l.ambient = color;
+                    l.diffuse = black;
+                    l.specular = black;
+                }
+                Light::DIRECTIONAL => l.position = mv * Vec4::Z,
+                _ => {
+                    l.position = mv * Vec4::W;
+                    l.attenuation = d.attenuation;
+                    if d.mode == Light::SPOT {
+                        l.spot_direction = (mv * Vec4::NEG_Z).truncate();
+                        l.spot_cutoff = d.spot_angle;
+                        l.spot_exponent = d.spot_exponent;
+                    }
+                }
+            }
             out.push(EyeLight {
-                mode: d.mode,
-                color: Vec3::new(rgb[0], rgb[1], rgb[2]) * d.intensity,
-                position: (mv * Vec4::new(0.0, 0.0, 0.0, 1.0)).truncate(),
-                direction: if d.mode == Light::DIRECTIONAL {
-                    (mv * Vec4::Z).truncate().normalize_or_zero()
-                } else {
-                    (mv * Vec4::NEG_Z).truncate().normalize_or_zero()
-                },
-                attenuation: d.attenuation,
-                cos_cutoff: d.spot_angle.to_radians().cos(),
-                exponent: d.spot_exponent,
+                light: l,
                 scope: nd.scope,
             });
         }
@@ -678,7 +800,12 @@ fn collect_lights(r: &ObjRef, world: &ObjRef, enabled: bool, out: &mut Vec<(Ligh
         let e = enabled && i.node.as_ref().is_some_and(|n| n.rendering);
         (
             e,
-            i.group().map(|g| g.children.clone()).unwrap_or_default(),
+            i.group()
+                .map(|g| g.children.clone())
+                .unwrap_or_default()
+                .into_iter()
+                .chain(super::deform::skeleton_of(r))
+                .collect::<Vec<_>>(),
             matches!(i.kind, Kind::Light(_)),
         )
     };
@@ -713,7 +840,7 @@ fn validate(vb: &VertexBuffer, ib: &IndexBuffer) -> Result<()> {
 
 /// Collects the drawable items of `r` (whose parent's world transform is `parent`).
 fn collect(r: &ObjRef, parent: Mat4, alpha: f32, scope: i32, out: &mut Vec<Item>) -> Result<()> {
-    let m = parent * local(r);
+    let m = tf(r).world(parent);
     collect_at(r, m, alpha, scope, out)
 }
 
@@ -734,21 +861,32 @@ fn collect_at(r: &ObjRef, m: Mat4, alpha: f32, cam_scope: i32, out: &mut Vec<Ite
         }
         return Ok(());
     }
+    // A SkinnedMesh's skeleton is its child branch.
+    if let Some(skeleton) = super::deform::skeleton_of(r) {
+        collect(&skeleton, m, alpha, cam_scope, out)?;
+    }
     if scope & cam_scope == 0 {
         return Ok(());
     }
+    // MorphingMesh / SkinnedMesh: the deformed copy (recomputed only when needed).
+    let deformed = super::deform::deformed_vertex_buffer(r)?;
     if let Some(mesh) = Mesh::accepts(&r.borrow()).then(|| Mesh(r.clone())) {
+        // Only a plain Mesh is culled against the bounds of its positions (a deformed
+        // copy's arrays are rewritten in place).
+        let cullable = deformed.is_none();
         let d = mesh.d();
+        let vb = deformed.as_ref().unwrap_or(&d.vb);
         for (ib, app) in d.ibs.iter().zip(&d.apps) {
             let Some(app) = app else { continue };
-            validate(&d.vb, ib)?;
+            validate(vb, ib)?;
             out.push(Item {
                 layer: app.layer(),
                 blended: is_blended(app),
-                what: What::Submesh(d.vb.clone(), ib.clone(), app.clone()),
+                what: What::Submesh(vb.clone(), ib.clone(), app.clone()),
                 model: m,
                 alpha,
                 scope,
+                cullable,
             });
         }
     } else if let Some(sprite) = Sprite3D::accepts(&r.borrow()).then(|| Sprite3D(r.clone())) {
@@ -760,6 +898,7 @@ fn collect_at(r: &ObjRef, m: Mat4, alpha: f32, cam_scope: i32, out: &mut Vec<Ite
                 model: m,
                 alpha,
                 scope,
+                cullable: false,
             });
         }
     }
@@ -872,78 +1011,200 @@ fn rgba_of(c: u32) -> Vec4 {
     Vec4::from_array(argb_to_rgba(c))
 }
 
-/// GL 1.3 lighting of one vertex (eye space, non-local viewer, no scene ambient).
-fn light_vertex(
-    m: &MaterialData,
-    vertex_color: Vec4,
-    pos: Vec3,
-    n: Vec3,
-    lights: &[EyeLight],
-    scope: i32,
-) -> Vec4 {
-    let (amb, dif) = if m.tracking {
-        (vertex_color, vertex_color)
-    } else {
-        (rgba_of(m.ambient), rgba_of(m.diffuse))
-    };
-    let spec = rgba_of(m.specular).truncate();
-    let mut c = rgba_of(m.emissive).truncate();
-    for l in lights
-        .iter()
-        .filter(|l| l.scope & scope != 0)
-        .take(MAX_LIGHTS)
-    {
-        if l.mode == Light::AMBIENT {
-            c += amb.truncate() * l.color;
-            continue;
-        }
-        let (dir, att, spot) = if l.mode == Light::DIRECTIONAL {
-            (l.direction, 1.0, 1.0)
+/// The core's fog for an M3G Fog: LINEAR from `near` to `far`, or EXPONENTIAL with the
+/// density; the distance is |z_eye| (M3G allows that approximation), per pixel.
+fn core_fog(f: &FogData) -> texenv::Fog {
+    let [r, g, b, _] = argb_to_rgba(f.color);
+    texenv::Fog {
+        mode: if f.mode == Fog::LINEAR {
+            FogMode::Linear
         } else {
-            let v = l.position - pos;
-            let d = v.length();
-            let dir = v.normalize_or_zero();
-            let [k0, k1, k2] = l.attenuation;
-            let att = 1.0 / (k0 + k1 * d + k2 * d * d);
-            let spot = if l.mode == Light::SPOT {
-                let cos = (-dir).dot(l.direction);
-                if cos < l.cos_cutoff {
-                    0.0
-                } else {
-                    cos.max(0.0).powf(l.exponent)
-                }
-            } else {
-                1.0
-            };
-            (dir, att, spot)
-        };
-        let ndl = n.dot(dir).max(0.0);
-        let mut term = dif.truncate() * l.color * ndl;
-        if ndl > 0.0 {
-            let h = (dir + Vec3::Z).normalize_or_zero();
-            term += spec * l.color * n.dot(h).max(0.0).powf(m.shininess);
-        }
-        c += term * att * spot;
+            FogMode::Exp
+        },
+        density: f.density,
+        start: f.near,
+        end: f.far,
+        color: [r, g, b, 1.0],
+        quality: core::state::Quality::Balanced,
     }
-    c.clamp(Vec3::ZERO, Vec3::ONE).extend(dif.w.clamp(0.0, 1.0))
 }
 
-fn fog_factor(fog: &super::appearance::FogData, z: f32) -> f32 {
-    let f = if fog.mode == super::appearance::Fog::LINEAR {
-        (fog.far - z) / (fog.far - fog.near)
-    } else {
-        (-fog.density * z).exp()
+/// The core material for an M3G Material whose lit alpha is the diffuse alpha times
+/// `alpha` (without vertex color tracking; with it the tracked vertex alpha carries the
+/// factor instead).
+fn core_material(m: &MaterialData, alpha: f32) -> CoreMaterial {
+    let opaque = |c: u32| rgba_of(c).truncate().extend(1.0);
+    let mut diffuse = rgba_of(m.diffuse);
+    if !m.tracking {
+        diffuse.w *= alpha;
+    }
+    CoreMaterial {
+        ambient: opaque(m.ambient),
+        diffuse,
+        specular: opaque(m.specular),
+        emission: opaque(m.emissive),
+        shininess: m.shininess,
+    }
+}
+
+/// M3G's level filter × image filter → the core's minification filter (checklist §2.1).
+fn min_filter(level: i32, image: i32) -> MinFilter {
+    let linear = image == Texture2D::FILTER_LINEAR;
+    match (level, linear) {
+        (Texture2D::FILTER_NEAREST, false) => MinFilter::NearestMipmapNearest,
+        (Texture2D::FILTER_NEAREST, true) => MinFilter::LinearMipmapNearest,
+        (Texture2D::FILTER_LINEAR, false) => MinFilter::NearestMipmapLinear,
+        (Texture2D::FILTER_LINEAR, true) => MinFilter::LinearMipmapLinear,
+        (_, false) => MinFilter::Nearest,
+        (_, true) => MinFilter::Linear,
+    }
+}
+
+/// An Image2D as a core texture: its format mapped to the core's base format (texels
+/// expanded as `core::texture` stores them), row 0 (the top row) at t = 0, and the mipmap
+/// chain (2 × 2 box filter) when `min` uses one.
+fn build_sampler(d: &ImageData, min: MinFilter, mag: MagFilter, ws: Wrap, wt: Wrap) -> Sampler {
+    let format = match d.format {
+        Image2D::ALPHA => BaseFormat::Alpha,
+        Image2D::LUMINANCE => BaseFormat::Luminance,
+        Image2D::LUMINANCE_ALPHA => BaseFormat::LuminanceAlpha,
+        Image2D::RGB => BaseFormat::Rgb,
+        _ => BaseFormat::Rgba,
     };
-    if f.is_nan() {
-        1.0
-    } else {
-        f.clamp(0.0, 1.0)
+    let bpp = format.components();
+    let texels = d
+        .pixels
+        .chunks_exact(bpp)
+        .map(|p| {
+            u32::from_le_bytes(match format {
+                BaseFormat::Alpha => [0, 0, 0, p[0]],
+                BaseFormat::Luminance => [p[0], p[0], p[0], 255],
+                BaseFormat::LuminanceAlpha => [p[0], p[0], p[0], p[1]],
+                BaseFormat::Rgb => [p[0], p[1], p[2], 255],
+                BaseFormat::Rgba => [p[0], p[1], p[2], p[3]],
+            })
+        })
+        .collect();
+    let mut levels = vec![Arc::new(TexImage {
+        width: d.width as u32,
+        height: d.height as u32,
+        format,
+        texels,
+    })];
+    if min.uses_mipmaps() {
+        loop {
+            let last = levels.last().unwrap();
+            if last.width == 1 && last.height == 1 {
+                break;
+            }
+            let next = last.half();
+            levels.push(Arc::new(next));
+        }
+    }
+    Sampler::new(levels, min, mag, ws, wt)
+}
+
+impl TexCache {
+    /// The core texture of `t`, converted again only when needed.
+    fn sampler(&mut self, t: &TextureData, stats: &mut RenderStats) -> Arc<Sampler> {
+        let wrap = |w: i32| {
+            if w == Texture2D::WRAP_CLAMP {
+                Wrap::ClampToEdge
+            } else {
+                Wrap::Repeat
+            }
+        };
+        let min = min_filter(t.level_filter, t.image_filter);
+        let mag = if t.image_filter == Texture2D::FILTER_LINEAR {
+            MagFilter::Linear
+        } else {
+            MagFilter::Nearest
+        };
+        let (ws, wt) = (wrap(t.wrap[0]), wrap(t.wrap[1]));
+        let key = (Rc::as_ptr(&t.image.0) as usize, min, mag, ws, wt);
+        let d = t.image.d();
+        if let Some(e) = self.entries.get_mut(&key) {
+            if e.pixels.as_ref().is_none_or(|p| *p == d.pixels) {
+                e.used = self.calls;
+                return e.sampler.clone();
+            }
+        }
+        stats.texture_uploads += 1;
+        let sampler = Arc::new(build_sampler(&d, min, mag, ws, wt));
+        self.entries.insert(
+            key,
+            TexEntry {
+                _image: t.image.clone(),
+                pixels: d.mutable.then(|| d.pixels.clone()),
+                sampler: sampler.clone(),
+                used: self.calls,
+            },
+        );
+        sampler
     }
 }
 
+/// The core's environment for a Texture2D blending function and blend color (the M3G
+/// table of §2.8 is GL's REPLACE, MODULATE, DECAL, BLEND and ADD).
+fn tex_env(t: &TextureData) -> TexEnv {
+    let [r, g, b, _] = argb_to_rgba(t.blend_color);
+    TexEnv {
+        mode: match t.blending {
+            Texture2D::FUNC_REPLACE => EnvMode::Replace,
+            Texture2D::FUNC_DECAL => EnvMode::Decal,
+            Texture2D::FUNC_BLEND => EnvMode::Blend,
+            Texture2D::FUNC_ADD => EnvMode::Add,
+            _ => EnvMode::Modulate,
+        },
+        color: [r, g, b, 1.0],
+    }
+}
+
+/// Whether the bounding sphere of `vb`'s positions (from the cached bounding box of the
+/// position array, after scale and bias) lies wholly outside one plane of the view
+/// frustum. The planes come from the projection's rows, so any camera works; a modelview
+/// that is not affine is never culled.
+fn outside_frustum(vb: &VertexBufferData, modelview: Mat4, projection: Mat4) -> bool {
+    let Some(pos) = &vb.positions else {
+        return false;
+    };
+    if modelview.row(3) != Vec4::W {
+        return false;
+    }
+    let [lo, hi] = pos.d().bounds();
+    let (lo, hi) = (Vec3::from(lo), Vec3::from(hi));
+    let s = vb.pos_scale;
+    let center = (lo + hi) * 0.5 * s + Vec3::from(vb.pos_bias);
+    let radius = (hi - lo).length() * 0.5 * s.abs();
+    let eye = modelview * center.extend(1.0);
+    let stretch = (0..3)
+        .map(|c| modelview.col(c).truncate().length())
+        .fold(0.0f32, f32::max);
+    // A margin keeps rounding from culling what touches the frustum.
+    let r = radius * stretch * 1.001 + 1e-6;
+    if !eye.is_finite() || !r.is_finite() {
+        return false;
+    }
+    let w = projection.row(3);
+    (0..3).any(|i| {
+        [1.0f32, -1.0].iter().any(|&sign| {
+            let plane = w + projection.row(i) * sign;
+            let n = plane.truncate().length();
+            plane.dot(eye) < -r * n
+        })
+    })
+}
+
+/// Draws one submesh: the Appearance becomes the state (compositing, polygon mode,
+/// lighting, fog, texture units), the VertexBuffer the draw call (positions with scale and
+/// bias in the modelview, normals, colors, texture coordinates with their scale and bias
+/// in the texture matrices), and the core does the rest.
+#[allow(clippy::too_many_arguments)]
 fn draw_submesh(
     s: &mut RenderState,
     b: &mut Bound,
+    textures: &mut TexCache,
+    stats: &mut RenderStats,
     vb: &VertexBuffer,
     ib: &IndexBuffer,
     app: &Appearance,
@@ -956,99 +1217,175 @@ fn draw_submesh(
     let vbd = vb.d();
     let pos = vbd.positions.clone().expect("validated");
     let pd = pos.d();
-    let n = pd.count as usize;
-    let modelview = s.modelview;
+    let scale = vbd.pos_scale;
     // Scale and bias fold into the modelview.
-    s.modelview = modelview
+    s.modelview = s.modelview
         * Mat4::from_translation(Vec3::from_array(vbd.pos_bias))
-        * Mat4::from_scale(Vec3::splat(vbd.pos_scale));
-    // Per-vertex colors: the color array or default color, lit when there is a Material,
-    // then the alpha factor, then (per vertex) fog.
-    let base: Vec<Vec4> = match &vbd.colors {
-        Some(c) => {
-            let cd = c.d();
-            (0..n)
-                .map(|v| {
-                    let ch = |k: usize| cd.data[v * cd.comps as usize + k] as f32 / 255.0;
-                    Vec4::new(ch(0), ch(1), ch(2), if cd.comps == 4 { ch(3) } else { 1.0 })
-                })
-                .collect()
-        }
-        None => vec![rgba_of(vbd.default_color); n],
-    };
+        * Mat4::from_scale(Vec3::splat(scale));
+    // Lighting (only with a Material): no scene ambient, one material for both faces,
+    // vertex color tracking as color material, normals always normalized.
     let material = a.material.as_ref().map(|m| m.d().clone());
-    let fog = a.fog.as_ref().map(|f| f.d().clone());
-    let eye: Vec<Vec3> = if material.is_some() || fog.is_some() {
-        (0..n)
-            .map(|v| {
-                let p = Vec3::new(
-                    pd.get(v, 0) as f32,
-                    pd.get(v, 1) as f32,
-                    pd.get(v, 2) as f32,
-                );
-                (s.modelview * p.extend(1.0)).truncate()
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
-    let mut colors = base;
     if let Some(m) = &material {
-        let nm = Mat3::from_mat4(modelview).inverse().transpose();
-        let nm = if nm.is_finite() { nm } else { Mat3::IDENTITY };
-        for (v, c) in colors.iter_mut().enumerate() {
-            let normal = vbd.normals.as_ref().map_or(Vec3::Z, |na| {
-                let nd = na.d();
-                let k = |c: usize| {
-                    let x = nd.get(v, c) as f32;
-                    if nd.size == 1 {
-                        (2.0 * x + 1.0) / 255.0
-                    } else {
-                        (2.0 * x + 1.0) / 65535.0
-                    }
-                };
-                Vec3::new(k(0), k(1), k(2))
-            });
-            let ne = (nm * normal).normalize_or_zero();
-            *c = light_vertex(m, *c, eye[v], ne, lights, item.scope);
+        let two_side = a.polygon_mode.as_ref().is_some_and(|p| p.d().two_sided);
+        let mat = core_material(m, item.alpha);
+        s.lighting = Some(Lighting {
+            lights: lights
+                .iter()
+                .filter(|l| l.scope & item.scope != 0)
+                .take(MAX_LIGHTS)
+                .map(|l| l.light)
+                .collect(),
+            model_ambient: Vec4::ZERO,
+            two_side,
+            front: mat,
+            back: mat,
+            color_material: m.tracking,
+        });
+        s.normalize = true;
+    }
+    s.fog = a.fog.as_ref().map(|f| core_fog(&f.d()));
+    // The alpha factor multiplies the post-lighting alpha: the material's diffuse alpha
+    // (folded above), else the vertex color's.
+    let alpha_on_vertex = material.as_ref().is_none_or(|m| m.tracking) && item.alpha != 1.0;
+    let colors = vbd.colors.clone();
+    let cd = colors.as_ref().map(|c| c.d());
+    let float_colors: Vec<u8>;
+    let color = match &cd {
+        Some(cd) if alpha_on_vertex => {
+            let comps = cd.comps as usize;
+            float_colors = cd
+                .data
+                .chunks_exact(comps)
+                .flat_map(|p| {
+                    let a = if comps == 4 { p[3] as f32 / 255.0 } else { 1.0 };
+                    [
+                        p[0] as f32 / 255.0,
+                        p[1] as f32 / 255.0,
+                        p[2] as f32 / 255.0,
+                        a * item.alpha,
+                    ]
+                })
+                .flat_map(f32::to_ne_bytes)
+                .collect();
+            AttribSource::Array(AttribArray {
+                data: &float_colors,
+                ty: core::ComponentType::Float,
+                size: 4,
+                stride: 16,
+                normalized: false,
+            })
         }
-    }
-    for c in colors.iter_mut() {
-        c.w *= item.alpha;
-    }
-    if let Some(f) = &fog {
-        let fc = rgba_of(f.color).truncate();
-        for (v, c) in colors.iter_mut().enumerate() {
-            let k = fog_factor(f, eye[v].z.abs());
-            *c = (c.truncate() * k + fc * (1.0 - k)).extend(c.w);
+        Some(cd) => AttribSource::Array(AttribArray {
+            data: &cd.data,
+            ty: core::ComponentType::UnsignedByte,
+            size: cd.comps as usize,
+            stride: cd.comps as usize,
+            normalized: true,
+        }),
+        None => {
+            let mut c = rgba_of(vbd.default_color);
+            if alpha_on_vertex {
+                c.w *= item.alpha;
+            }
+            AttribSource::Constant(c.to_array())
         }
+    };
+    // Normals carry no scale: a negative position scale (in the modelview) would turn them
+    // around, so they are turned back.
+    let normals = vbd.normals.clone().filter(|_| s.lighting.is_some());
+    let nd = normals.as_ref().map(|n| n.d());
+    let flipped: Vec<u8>;
+    let normal = match &nd {
+        Some(nd) => {
+            let arr = AttribArray {
+                data: &nd.data,
+                ty: component_type(nd.size),
+                size: 3,
+                stride: 3 * nd.size as usize,
+                normalized: true,
+            };
+            if scale < 0.0 {
+                flipped = (0..nd.count as usize)
+                    .flat_map(|v| {
+                        let n = arr.fetch(v);
+                        [-n[0], -n[1], -n[2]]
+                    })
+                    .flat_map(f32::to_ne_bytes)
+                    .collect();
+                AttribSource::Array(AttribArray {
+                    data: &flipped,
+                    ty: core::ComponentType::Float,
+                    size: 3,
+                    stride: 12,
+                    normalized: false,
+                })
+            } else {
+                AttribSource::Array(arr)
+            }
+        }
+        None => AttribSource::Constant([0.0, 0.0, 1.0, 0.0]),
+    };
+    // Texture units: the Texture2D's image and parameters, its transform T·R·S·M after the
+    // coordinates' scale and bias.
+    let mut units = Vec::new();
+    for (u, t) in a.textures.iter().enumerate() {
+        let Some(t) = t else { continue };
+        let td = t.d();
+        s.textures[u] = Some(TextureUnit {
+            sampler: textures.sampler(&td, stats),
+            env: tex_env(&td),
+            coord_replace: false,
+        });
+        let tex_m = tf(t.raw()).composite();
+        s.texture_matrices[u] = match &vbd.texcoords[u] {
+            Some((va, tscale, tbias)) => {
+                units.push((u, va.clone()));
+                tex_m
+                    * Mat4::from_translation(Vec3::from_array(*tbias))
+                    * Mat4::from_scale(Vec3::splat(*tscale))
+            }
+            None => tex_m,
+        };
     }
-    let flat: Vec<f32> = colors.iter().flat_map(|c| c.to_array()).collect();
-    let cbytes = f32_bytes(&flat);
+    let tds: Vec<_> = units.iter().map(|(u, va)| (*u, va.d())).collect();
     let ibd = ib.d();
-    let call = draw_call(
-        Indices::U16(&ibd.triangles),
+    let indices = Indices::U16(&ibd.triangles);
+    let mut call = DrawCall::new(
+        Primitive::Triangles,
+        indices,
         AttribArray {
             data: &pd.data,
-            ty: if pd.size == 1 {
-                core::ComponentType::Byte
-            } else {
-                core::ComponentType::Short
-            },
+            ty: component_type(pd.size),
             size: 3,
             stride: 3 * pd.size as usize,
             normalized: false,
         },
-        AttribSource::Array(AttribArray {
-            data: &cbytes,
-            ty: core::ComponentType::Float,
-            size: 4,
-            stride: 16,
-            normalized: false,
-        }),
     );
+    call.color = color;
+    call.normal = normal;
+    for (u, td) in &tds {
+        call.texcoord[*u] = AttribSource::Array(AttribArray {
+            data: &td.data,
+            ty: component_type(td.size),
+            size: td.comps as usize,
+            stride: (td.comps * td.size) as usize,
+            normalized: false,
+        });
+    }
+    stats.submeshes_drawn += 1;
+    if let Some((lo, hi)) = indices.range() {
+        stats.vertices_transformed += (hi - lo + 1) as u64;
+    }
     // Out of memory drops the draw (M3G has no such exception).
     let _ = core::record(s, &call, &mut b.frame);
+}
+
+fn component_type(size: i32) -> core::ComponentType {
+    if size == 1 {
+        core::ComponentType::Byte
+    } else {
+        core::ComponentType::Short
+    }
 }
 
 /// A sprite's screen rectangle (M3G window coordinates: x right, y down), depth in NDC, and
@@ -1121,9 +1458,10 @@ fn draw_sprite(
     s.cull = None;
     let a = app.d().clone();
     apply_compositing(&mut s, a.compositing_mode.as_ref(), b.depth);
+    // Fog at the sprite's depth, by the core's fog equation.
     let fog = a.fog.as_ref().map(|f| {
-        let d = f.d();
-        (fog_factor(&d, dist.abs()), rgba_of(d.color).truncate())
+        let fog = core_fog(&f.d());
+        (fog.factor(dist.abs()), fog)
     });
     let img = sprite.image();
     let id = img.d();
@@ -1160,8 +1498,10 @@ fn draw_sprite(
             }
             let mut c = Vec4::from_array(id.rgba(ix, iy));
             c.w *= alpha;
-            if let Some((f, fc)) = fog {
-                c = (c.truncate() * f + fc * (1.0 - f)).extend(c.w);
+            if let Some((f, fog)) = &fog {
+                let mut rgba = c.to_array();
+                fog.apply(*f, &mut rgba);
+                c = Vec4::from_array(rgba);
             }
             let (xa, xb) = (
                 x0 + w * i as f32 / ncols as f32,

@@ -15,6 +15,8 @@ pub(crate) struct MeshData {
     pub vb: VertexBuffer,
     pub ibs: Vec<IndexBuffer>,
     pub apps: Vec<Option<Appearance>>,
+    /// The MorphingMesh / SkinnedMesh part.
+    pub ext: super::deform::MeshExt,
 }
 
 handle!(
@@ -34,6 +36,7 @@ impl Mesh {
                 vb: vb.clone(),
                 ibs: vec![ib.clone()],
                 apps: vec![app.cloned()],
+                ext: Default::default(),
             }),
             true,
             true,
@@ -60,6 +63,7 @@ impl Mesh {
                 vb: vb.clone(),
                 ibs: ibs.to_vec(),
                 apps,
+                ext: Default::default(),
             }),
             true,
             true,

@@ -51,34 +51,51 @@
 //! Each class's own table is on its type ([`Object3DExt`], [`TransformableExt`],
 //! [`NodeExt`], [`GroupExt`], [`Graphics3D`]).
 //!
-//! Animation (AnimationTrack, AnimationController, KeyframeSequence, MorphingMesh,
-//! SkinnedMesh) and the Loader are not here yet; `Object3DExt::animate` and the track list
-//! on every object are their hooks.
+//! | `KeyframeSequence.getKeyframe(i, float[])` | `get_keyframe(i) -> (time, values)` |
+//! | `MorphingMesh(base, targets, ib, app)` / `(…, ib[], app[])` | `new` / `with_submeshes` |
+//! | `SkinnedMesh(vb, ib, app, skeleton)` / `(vb, ib[], app[], skeleton)` | `new` / `with_submeshes` |
+//! | `SkinnedMesh.getBoneVertices(bone, int[], float[])` | `get_bone_vertices(bone) -> (indices, weights)` |
+//!
+//! MorphingMesh and SkinnedMesh are Meshes (`Object3D::downcast::<Mesh>` and `as_mesh()`
+//! work); they draw and pick a deformed copy of the vertex buffer, recomputed only when an
+//! input changed. The Loader is not here yet.
 #![warn(missing_docs)]
 
+mod animation;
 mod appearance;
+mod deform;
 mod error;
 mod graphics3d;
 mod image;
+mod keyframe;
+pub mod loader;
 mod mesh;
+mod morphing_mesh;
 mod node;
 mod nodes;
 mod object;
 mod pick;
+mod skinned_mesh;
 mod transform;
 mod vertex;
+pub mod writer;
 
+pub use animation::{AnimationController, AnimationTrack};
 pub use appearance::{
     Appearance, Background, CompositingMode, Fog, Material, PolygonMode, Texture2D,
     MAX_TEXTURE_DIMENSION,
 };
 pub use error::{M3gError, Result};
-pub use graphics3d::{Graphics3D, Property, MAX_LIGHTS, MAX_VIEWPORT_DIMENSION};
+pub use graphics3d::{Graphics3D, Property, RenderStats, MAX_LIGHTS, MAX_VIEWPORT_DIMENSION};
 pub use image::Image2D;
+pub use loader::{LoadError, Loader};
+pub use keyframe::KeyframeSequence;
 pub use mesh::{Mesh, Sprite3D, MAX_SPRITE_CROP_DIMENSION};
+pub use morphing_mesh::MorphingMesh;
 pub use node::{Group, GroupExt, Node, NodeExt, World};
 pub use nodes::{Camera, Light};
 pub use object::{Handle, Object3D, Object3DExt, TransformableExt};
 pub use pick::RayIntersection;
+pub use skinned_mesh::{SkinnedMesh, MAX_TRANSFORMS_PER_VERTEX};
 pub use transform::Transform;
 pub use vertex::{IndexBuffer, TriangleStripArray, VertexArray, VertexBuffer, NUM_TEXTURE_UNITS};

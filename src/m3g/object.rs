@@ -30,8 +30,11 @@ pub(crate) type WeakRef = Weak<RefCell<Inner>>;
 pub struct Inner {
     pub(crate) user_id: i32,
     pub(crate) user_object: Option<Rc<dyn Any>>,
-    /// Attached animation tracks (room for the animation issue; nothing attaches any yet).
+    /// Attached animation tracks.
     pub(crate) tracks: Vec<Object3D>,
+    /// Bumped by every `dm()` of the class data (and by animation writes): lets deformed
+    /// meshes tell whether an input changed.
+    pub(crate) gen: u64,
     pub(crate) tf: Option<TransformableData>,
     pub(crate) node: Option<NodeData>,
     pub(crate) kind: Kind,
@@ -57,6 +60,9 @@ pub(crate) enum Kind {
     VertexArray(VertexArrayData),
     VertexBuffer(VertexBufferData),
     IndexBuffer(IndexData),
+    KeyframeSequence(super::keyframe::KeyframeData),
+    AnimationController(super::animation::ControllerData),
+    AnimationTrack(super::animation::TrackData),
 }
 
 impl Inner {
@@ -65,6 +71,7 @@ impl Inner {
             user_id: 0,
             user_object: None,
             tracks: Vec::new(),
+            gen: 0,
             tf: (transformable || node).then(TransformableData::default),
             node: node.then(NodeData::default),
             kind,
@@ -94,7 +101,7 @@ impl Inner {
             Kind::World(_) => "World",
             Kind::Camera(_) => "Camera",
             Kind::Light(_) => "Light",
-            Kind::Mesh(_) => "Mesh",
+            Kind::Mesh(m) => m.ext.class_name(),
             Kind::Sprite(_) => "Sprite3D",
             Kind::Appearance(_) => "Appearance",
             Kind::Background(_) => "Background",
@@ -107,6 +114,9 @@ impl Inner {
             Kind::VertexArray(_) => "VertexArray",
             Kind::VertexBuffer(_) => "VertexBuffer",
             Kind::IndexBuffer(_) => "TriangleStripArray",
+            Kind::KeyframeSequence(_) => "KeyframeSequence",
+            Kind::AnimationController(_) => "AnimationController",
+            Kind::AnimationTrack(_) => "AnimationTrack",
         }
     }
 
@@ -133,6 +143,13 @@ impl Inner {
                     if let Some(a) = app {
                         push(&a.0);
                     }
+                }
+                m.ext.references().iter().for_each(&mut push);
+            }
+            Kind::AnimationTrack(t) => {
+                push(&t.sequence.0);
+                if let Some(c) = &t.controller {
+                    push(&c.0);
                 }
             }
             Kind::Sprite(s) => {
@@ -262,7 +279,10 @@ macro_rules! class_data {
             }
             #[allow(dead_code)]
             pub(crate) fn dm(&self) -> std::cell::RefMut<'_, $Data> {
-                std::cell::RefMut::map(self.0.borrow_mut(), |i| match &mut i.kind {
+                std::cell::RefMut::map(self.0.borrow_mut(), |i| match {
+                    i.gen = i.gen.wrapping_add(1);
+                    &mut i.kind
+                } {
                     $crate::m3g::object::Kind::$Variant(d) => d,
                     _ => unreachable!("handle of the wrong class"),
                 })
@@ -324,6 +344,7 @@ pub(crate) fn for_each_reachable(root: &ObjRef, f: &mut dyn FnMut(&ObjRef) -> bo
 /// | `getReferences(Object3D[])` | [`get_references`](Self::get_references) (returns them all) |
 /// | `duplicate()` | [`duplicate`](Self::duplicate) |
 /// | `animate(int)` | [`animate`](Self::animate) |
+/// | `addAnimationTrack` / `removeAnimationTrack` | [`add_animation_track`](Self::add_animation_track) / [`remove_animation_track`](Self::remove_animation_track) |
 /// | `getAnimationTrackCount` / `getAnimationTrack` | [`animation_track_count`](Self::animation_track_count) / [`animation_track`](Self::animation_track) |
 pub trait Object3DExt: Handle {
     /// `getUserID()`.
@@ -366,11 +387,23 @@ pub trait Object3DExt: Handle {
     fn duplicate(&self) -> Self {
         Self::from_raw(duplicate_raw(self.raw()))
     }
-    /// `animate(worldTime)`: applies the animations of this object and everything reachable
-    /// from it and returns the validity interval. No animation classes exist yet, so nothing
-    /// changes and the answer is "valid forever" (`0x7FFFFFFF`).
-    fn animate(&self, _world_time: i32) -> Result<i32> {
-        Ok(i32::MAX)
+    /// `animate(worldTime)`: applies the animation tracks of this object and of everything
+    /// reachable from it (blended per property: Σ weight·value, orientation normalized after
+    /// the sum) and returns the validity interval: how long from `world_time` no animated
+    /// value will change (conservative; `0x7FFFFFFF` when nothing will). IllegalState if an
+    /// active track's KeyframeSequence is invalid.
+    fn animate(&self, world_time: i32) -> Result<i32> {
+        super::animation::animate(self.raw(), world_time)
+    }
+    /// `addAnimationTrack(track)`: IllegalArgument if the track's property does not apply to
+    /// this class, the track is already attached, or another attached track animates the
+    /// same property with a different component count.
+    fn add_animation_track(&self, track: &super::animation::AnimationTrack) -> Result<()> {
+        super::animation::add_track(self.raw(), track)
+    }
+    /// `removeAnimationTrack(track)`: `None` or a track not attached is ignored.
+    fn remove_animation_track(&self, track: Option<&super::animation::AnimationTrack>) {
+        super::animation::remove_track(self.raw(), track)
     }
     /// `getAnimationTrackCount()`.
     fn animation_track_count(&self) -> usize {
@@ -413,6 +446,7 @@ fn duplicate_raw(r: &ObjRef) -> ObjRef {
                 }
             }
         }
+        super::skinned_mesh::remap_bones(&mut i, &map);
         if let Kind::World(w) = &mut i.kind {
             if let Some(c) = &w.camera {
                 if let Some(n) = map.get(&ptr(&c.0)) {
@@ -446,16 +480,39 @@ fn duplicate_node(
     if let Some(g) = copy.borrow_mut().group_mut() {
         g.children = copies;
     }
+    super::skinned_mesh::duplicate_skeleton(&copy, &mut |s| duplicate_node(s, Some(&copy), map));
     copy
 }
 
 /// The Transformable part: translation T, orientation R, scale S and general matrix M.
+///
+/// Write the fields only through [`tf_mut`]: it sets the dirty flags of the cached
+/// composite and world transforms ([`TfCache`]).
 #[derive(Clone, Debug)]
 pub(crate) struct TransformableData {
     pub translation: Vec3,
     pub scale: Vec3,
     pub orientation: Quat,
     pub matrix: Mat4,
+    pub cache: TfCache,
+}
+
+/// The cached transforms of a Transformable, `None` while dirty: the composite T·R·S·M and,
+/// for a node, its node-to-world transform with the parent's node-to-world transform it was
+/// computed from (so a new parent or a moved ancestor shows up as a different parent
+/// transform and recomputes it).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct TfCache {
+    composite: std::cell::Cell<Option<Mat4>>,
+    world: std::cell::Cell<Option<(Mat4, Mat4)>>,
+}
+
+impl TfCache {
+    /// Marks both transforms dirty.
+    pub fn invalidate(&self) {
+        self.composite.set(None);
+        self.world.set(None);
+    }
 }
 
 impl Default for TransformableData {
@@ -465,25 +522,49 @@ impl Default for TransformableData {
             scale: Vec3::ONE,
             orientation: Quat::IDENTITY,
             matrix: Mat4::IDENTITY,
+            cache: TfCache::default(),
         }
     }
 }
 
 impl TransformableData {
-    /// C = T · R · S · M.
+    /// C = T · R · S · M (cached until the next [`tf_mut`]).
     pub fn composite(&self) -> Mat4 {
-        Mat4::from_translation(self.translation)
+        if let Some(m) = self.cache.composite.get() {
+            return m;
+        }
+        let m = Mat4::from_translation(self.translation)
             * Mat4::from_quat(self.orientation)
             * Mat4::from_scale(self.scale)
-            * self.matrix
+            * self.matrix;
+        self.cache.composite.set(Some(m));
+        m
+    }
+
+    /// `parent · C`: the node-to-world transform of a node whose parent's is `parent`,
+    /// cached until the next [`tf_mut`] or a different `parent`.
+    pub fn world(&self, parent: Mat4) -> Mat4 {
+        if let Some((p, w)) = self.cache.world.get() {
+            if p == parent {
+                return w;
+            }
+        }
+        let w = parent * self.composite();
+        self.cache.world.set(Some((parent, w)));
+        w
     }
 }
 
 pub(crate) fn tf(r: &ObjRef) -> Ref<'_, TransformableData> {
     Ref::map(r.borrow(), |i| i.tf.as_ref().expect("a Transformable"))
 }
+/// The Transformable part for writing; marks its cached transforms dirty.
 pub(crate) fn tf_mut(r: &ObjRef) -> RefMut<'_, TransformableData> {
-    RefMut::map(r.borrow_mut(), |i| i.tf.as_mut().expect("a Transformable"))
+    RefMut::map(r.borrow_mut(), |i| {
+        let t = i.tf.as_mut().expect("a Transformable");
+        t.cache.invalidate();
+        t
+    })
 }
 
 /// The methods of `Transformable` (nodes and [`Texture2D`](super::Texture2D)).

@@ -170,6 +170,10 @@ fn visit(r: &ObjRef, m: Mat4, p: &mut Pick) -> Result<()> {
         }
         return Ok(());
     }
+    // A SkinnedMesh's skeleton is its child branch.
+    if let Some(skeleton) = super::deform::skeleton_of(r) {
+        visit(&skeleton, m * local(&skeleton), p)?;
+    }
     if scope & p.scope == 0 {
         return Ok(());
     }
@@ -186,8 +190,10 @@ fn pick_mesh(mesh: &Mesh, m: Mat4, p: &mut Pick) -> Result<()> {
     let o = (inv * p.o.extend(1.0)).truncate();
     let d = (inv * p.d.extend(0.0)).truncate();
     let mirrored = m.determinant() < 0.0;
+    // MorphingMesh / SkinnedMesh: the deformed copy.
+    let deformed = super::deform::deformed_vertex_buffer(&mesh.0)?;
     let md = mesh.d();
-    let vbd = md.vb.d();
+    let vbd = deformed.as_ref().unwrap_or(&md.vb).d();
     for (k, (ib, app)) in md.ibs.iter().zip(&md.apps).enumerate() {
         let Some(app) = app else { continue };
         let Some(pos) = &vbd.positions else {

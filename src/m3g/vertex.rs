@@ -14,9 +14,38 @@ pub(crate) struct VertexArrayData {
     pub size: i32,
     /// Components in native byte order (i8 or i16).
     pub data: Vec<u8>,
+    /// The cached per-component minimum and maximum of the first three components (the
+    /// bounding box of a position array), `None` while dirty: whatever writes `data`
+    /// outside the setters here must call [`VertexArrayData::touch`].
+    pub bounds: std::cell::Cell<Option<[[f32; 3]; 2]>>,
 }
 
 impl VertexArrayData {
+    /// Marks the cached bounds dirty after `data` changed.
+    pub fn touch(&self) {
+        self.bounds.set(None);
+    }
+
+    /// The minimum and maximum of components 0..3 over every vertex (cached).
+    pub fn bounds(&self) -> [[f32; 3]; 2] {
+        if let Some(b) = self.bounds.get() {
+            return b;
+        }
+        let comps = (self.comps as usize).min(3);
+        let range = |c: usize, f: fn(f32, f32) -> f32, init: f32| {
+            if c >= comps {
+                return 0.0;
+            }
+            (0..self.count as usize).fold(init, |m, v| f(m, self.get(v, c) as f32))
+        };
+        let b = [
+            [0, 1, 2].map(|c| range(c, f32::min, f32::MAX)),
+            [0, 1, 2].map(|c| range(c, f32::max, f32::MIN)),
+        ];
+        self.bounds.set(Some(b));
+        b
+    }
+
     /// Component `c` of vertex `v` as a signed integer.
     pub fn get(&self, v: usize, c: usize) -> i32 {
         let k = v * self.comps as usize + c;
@@ -53,6 +82,7 @@ impl VertexArray {
                 comps: num_components,
                 size: component_size,
                 data: vec![0; n],
+                bounds: Default::default(),
             }),
             false,
             false,
@@ -85,6 +115,7 @@ impl VertexArray {
         for (k, v) in values[..n as usize * c].iter().enumerate() {
             d.data[at + 2 * k..at + 2 * k + 2].copy_from_slice(&v.to_ne_bytes());
         }
+        d.touch();
         Ok(())
     }
 
@@ -102,6 +133,7 @@ impl VertexArray {
         let c = d.comps as usize;
         let at = first as usize * c;
         d.data[at..at + n as usize * c].copy_from_slice(&values[..n as usize * c]);
+        d.touch();
         Ok(())
     }
 

@@ -11,7 +11,7 @@ use super::{client_bytes, with_context, write_values};
 ///
 /// # Safety
 /// A non-null `names` must point to `n` readable names.
-unsafe fn names<'a>(n: GLsizei, names: *const GLuint) -> &'a [GLuint] {
+pub(super) unsafe fn names<'a>(n: GLsizei, names: *const GLuint) -> &'a [GLuint] {
     if n <= 0 || names.is_null() {
         return &[];
     }

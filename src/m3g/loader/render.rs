@@ -1,0 +1,51 @@
+//! Rendering a loaded scene the way the corpus reference images were made (the code path of
+//! the `m3g-render` tool, shared with the tests).
+
+use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
+use crate::m3g::{Graphics3D, Object3D, Object3DExt, World};
+
+/// Renders the first World among `roots` (a file without one is an error) at `time_ms` with
+/// its active camera into a `width` × `height` 8-bit RGBA target with a 16-bit depth buffer
+/// and hints 0, cleared by the World's Background (or to black and depth 1 without one).
+/// Returns RGB bytes, top row first.
+pub fn render_roots(
+    roots: &[Object3D],
+    time_ms: i32,
+    width: u32,
+    height: u32,
+) -> std::result::Result<Vec<u8>, String> {
+    let world = roots
+        .iter()
+        .find_map(|r| r.downcast::<World>())
+        .ok_or_else(|| {
+            let first = roots.first().map_or("nothing", |r| r.class_name());
+            format!("no World among the root objects (the first root is a {first})")
+        })?;
+    world
+        .animate(time_ms)
+        .map_err(|e| format!("animate({time_ms}) failed: {e}"))?;
+    let target = Target::new(
+        width,
+        height,
+        TargetFormat {
+            color: ColorFormat::Rgba8888,
+            depth: Some(DepthFormat::D16),
+            stencil_bits: 0,
+        },
+    );
+    let mut g = Graphics3D::new();
+    g.bind_target(target, true, 0)
+        .map_err(|e| format!("cannot bind a {width}x{height} target: {e}"))?;
+    let r = g.render_world(&world);
+    let target = g.release_target().expect("a core target");
+    r.map_err(|e| format!("render(World) failed: {e}"))?;
+    let (w, h) = (width as usize, height as usize);
+    let mut out = Vec::with_capacity(w * h * 3);
+    for y in 0..h {
+        let row = &target.color()[(h - 1 - y) * w..][..w];
+        for px in row {
+            out.extend_from_slice(&px.to_le_bytes()[..3]);
+        }
+    }
+    Ok(out)
+}
