@@ -1,5 +1,5 @@
 #!/bin/sh
-# Usage: scripts/install.sh PREFIX [LIBDIR]
+# Usage: scripts/install.sh PREFIX [LIBDIR]    (GLES_CM_LIB=path overrides the library installed)
 #
 # Installs a release build: PREFIX/lib/libGLES_CM.so with the compatibility names beside it
 # (libGLESv1_CM.so.1, libGLESv1_CM.so, libEGL.so.1, libEGL.so, all links to it), the headers
@@ -14,7 +14,7 @@ fi
 prefix=$1
 libdir=${2:-$prefix/lib}
 here=$(cd "$(dirname "$0")/.." && pwd)
-lib=$here/target/release/libGLES_CM.so
+lib=${GLES_CM_LIB:-$here/target/release/libGLES_CM.so}
 [ -e "$lib" ] || { echo "$0: $lib not found; run cargo build --release" >&2; exit 1; }
 
 mkdir -p "$libdir/pkgconfig" "$prefix/include"
