@@ -69,7 +69,9 @@ static void etc1(void)
     glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_ETC1_RGB8_OES, 2, 1, 0, 8, blocks);
     CHECK_GL(GL_NO_ERROR);
     glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 1, GL_ETC1_RGB8_OES, 8, blocks);
-    CHECK_GL(GL_INVALID_OPERATION);
+    /* The extension forbids sub-image updates; Mesa accepts them. */
+    CHECK_MESA_DEVIATES(glGetError() == GL_INVALID_OPERATION, "Mesa raises no error");
+    CHECK_GL(GL_NO_ERROR);
     glDeleteTextures(1, &tex);
 }
 
@@ -122,6 +124,6 @@ int main(void)
     if (has_ext("GL_EXT_texture_format_BGRA8888"))
         bgra();
     else
-        ct_save("bgra"), ct_save("bgra");
+        ct_save("bgra");
     return ct_done();
 }

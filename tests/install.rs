@@ -15,7 +15,9 @@ fn deps_dir() -> PathBuf {
 }
 
 fn run(cmd: &mut Command) -> String {
-    let out = cmd.output().unwrap_or_else(|e| panic!("cannot run {cmd:?}: {e}"));
+    let out = cmd
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run {cmd:?}: {e}"));
     assert!(
         out.status.success(),
         "{cmd:?} failed:\n{}{}",
@@ -27,7 +29,11 @@ fn run(cmd: &mut Command) -> String {
 
 #[test]
 fn installed_tree_builds_and_runs_a_program_through_pkg_config() {
-    if Command::new("pkg-config").arg("--version").output().is_err() {
+    if Command::new("pkg-config")
+        .arg("--version")
+        .output()
+        .is_err()
+    {
         println!("skipped: pkg-config is not installed");
         return;
     }

@@ -94,12 +94,12 @@ fn f(v: f32) -> [u8; 4] {
 
 /// The checklist's 86-byte test vector.
 const MINIMAL: [u8; 86] = [
-    0xab, 0x4a, 0x53, 0x52, 0x31, 0x38, 0x34, 0xbb, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x1e, 0x00,
-    0x00, 0x00, 0x11, 0x00, 0x00, 0x00, 0x00, 0x0c, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x56,
-    0x00, 0x00, 0x00, 0x56, 0x00, 0x00, 0x00, 0x00, 0xe9, 0x00, 0xed, 0x09, 0x00, 0x2c, 0x00,
-    0x00, 0x00, 0x1f, 0x00, 0x00, 0x00, 0x09, 0x1a, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
-    0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x01, 0x01, 0xff, 0xff, 0xff,
-    0xff, 0xff, 0x00, 0x00, 0x00, 0x00, 0x00, 0x6c, 0x05, 0x2b, 0x37,
+    0xab, 0x4a, 0x53, 0x52, 0x31, 0x38, 0x34, 0xbb, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x1e, 0x00, 0x00,
+    0x00, 0x11, 0x00, 0x00, 0x00, 0x00, 0x0c, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x56, 0x00, 0x00,
+    0x00, 0x56, 0x00, 0x00, 0x00, 0x00, 0xe9, 0x00, 0xed, 0x09, 0x00, 0x2c, 0x00, 0x00, 0x00, 0x1f,
+    0x00, 0x00, 0x00, 0x09, 0x1a, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+    0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x01, 0x01, 0xff, 0xff, 0xff, 0xff, 0xff, 0x00, 0x00, 0x00,
+    0x00, 0x00, 0x6c, 0x05, 0x2b, 0x37,
 ];
 
 fn err_of(bytes: &[u8]) -> LoadError {
@@ -158,7 +158,11 @@ fn checklist_negative_mutations_fail_with_a_clear_error() {
     let e = err_of(&b);
     assert_eq!(e.object, Some(2));
     assert_eq!(e.field.as_deref(), Some("enableRendering"), "{e}");
-    assert!(e.to_string().contains("object 2 (Group), field enableRendering"), "{e}");
+    assert!(
+        e.to_string()
+            .contains("object 2 (Group), field enableRendering"),
+        "{e}"
+    );
     // Scheme 2.
     let mut b = MINIMAL;
     b[42] = 2;
@@ -186,7 +190,10 @@ fn checklist_negative_mutations_fail_with_a_clear_error() {
 fn hand_made_corrupt_objects_name_index_and_field() {
     // Self reference as child.
     let e = err_of(&file(false, &[(0, vec![group(&[2])])]));
-    assert_eq!((e.object, e.field.as_deref()), (Some(2), Some("children[0]")));
+    assert_eq!(
+        (e.object, e.field.as_deref()),
+        (Some(2), Some("children[0]"))
+    );
     // Forward reference.
     let e = err_of(&file(false, &[(0, vec![group(&[3]), group(&[])])]));
     assert!(e.message.contains("forward"), "{e}");
@@ -199,13 +206,19 @@ fn hand_made_corrupt_objects_name_index_and_field() {
     cm.extend(f(0.0));
     cm.extend(f(0.0));
     let e = err_of(&file(false, &[(0, vec![object(6, &cm), group(&[2])])]));
-    assert!(e.message.contains("is a CompositingMode, expected a Node"), "{e}");
+    assert!(
+        e.message.contains("is a CompositingMode, expected a Node"),
+        "{e}"
+    );
     // Two parents.
     let e = err_of(&file(
         false,
         &[(0, vec![group(&[]), group(&[2]), group(&[2])])],
     ));
-    assert_eq!((e.object, e.field.as_deref()), (Some(4), Some("children[0]")));
+    assert_eq!(
+        (e.object, e.field.as_deref()),
+        (Some(4), Some("children[0]"))
+    );
     // -0.0 in a translation.
     let mut v = o3d();
     v.push(1);
@@ -222,7 +235,11 @@ fn hand_made_corrupt_objects_name_index_and_field() {
     assert_eq!(e.field.as_deref(), Some("translation[0]"));
     assert!(e.message.contains("-0.0"));
     // NaN, infinity and a denormal in a Material's shininess.
-    for (bits, what) in [(0x7FC0_0000u32, "NaN"), (0x7F80_0000, "infinite"), (1, "denormal")] {
+    for (bits, what) in [
+        (0x7FC0_0000u32, "NaN"),
+        (0x7F80_0000, "infinite"),
+        (1, "denormal"),
+    ] {
         let mut m = o3d();
         m.extend([0; 3 + 4 + 3 + 3]);
         m.extend(le(bits));
@@ -257,7 +274,9 @@ fn hand_made_corrupt_objects_name_index_and_field() {
     im.extend(le(0));
     im.extend(le(0));
     assert_eq!(
-        err_of(&file(false, &[(0, vec![object(10, &im)])])).field.as_deref(),
+        err_of(&file(false, &[(0, vec![object(10, &im)])]))
+            .field
+            .as_deref(),
         Some("pixels")
     );
     let mut im = o3d();
@@ -372,7 +391,9 @@ fn field_layouts_load_as_specified() {
     let p = p.downcast_ref::<UserParameters>().unwrap();
     assert_eq!(p.get(&7), Some(&vec![0xAB, 0xCD]));
     // And the writer keeps it all.
-    let again = Loader::new().load_bytes(&save(&l.roots, true).unwrap()).unwrap();
+    let again = Loader::new()
+        .load_bytes(&save(&l.roots, true).unwrap())
+        .unwrap();
     assert_eq!(fingerprints(&again), fingerprints(&l));
 }
 
@@ -388,8 +409,14 @@ fn png_formats_follow_the_m3g_rule() {
     };
     let cases = [
         (enc(&[1, 2], ExtendedColorType::L8), Image2D::LUMINANCE),
-        (enc(&[1, 2, 3, 4], ExtendedColorType::La8), Image2D::LUMINANCE_ALPHA),
-        (enc(&[1, 2, 3, 4, 5, 6], ExtendedColorType::Rgb8), Image2D::RGB),
+        (
+            enc(&[1, 2, 3, 4], ExtendedColorType::La8),
+            Image2D::LUMINANCE_ALPHA,
+        ),
+        (
+            enc(&[1, 2, 3, 4, 5, 6], ExtendedColorType::Rgb8),
+            Image2D::RGB,
+        ),
         (
             enc(&[1, 2, 3, 4, 5, 6, 7, 8], ExtendedColorType::Rgba8),
             Image2D::RGBA,
@@ -462,7 +489,10 @@ fn every_corpus_file_loads() {
             .unwrap_or_else(|e| panic!("{}: {e}", p.display()));
         assert!(!l.roots.is_empty());
         assert_eq!(
-            l.roots.iter().filter(|r| r.downcast::<World>().is_some()).count(),
+            l.roots
+                .iter()
+                .filter(|r| r.downcast::<World>().is_some())
+                .count(),
             1,
             "{}",
             p.display()
@@ -491,7 +521,7 @@ fn corpus_mutations_never_panic() {
     for p in corpus() {
         let orig = std::fs::read(&p).unwrap();
         let dir = p.parent().unwrap().to_path_buf();
-        for k in 0..60 {
+        for k in 0..120 {
             let mut b = orig.clone();
             match k % 4 {
                 0 => b.truncate(rnd() as usize % b.len()),
@@ -499,12 +529,13 @@ fn corpus_mutations_never_panic() {
                     let i = rnd() as usize % b.len();
                     b[i] ^= 1 << (rnd() % 8);
                 }
-                _ => {
+                2 => {
                     // Flip a byte and repair the checksums so the object parser sees it.
                     let i = 12 + rnd() as usize % (b.len() - 12);
                     b[i] = rnd() as u8;
                     repair_sums(&mut b);
                 }
+                _ => b = mutate_objects(&orig, rnd(), rnd() as u8),
             }
             let d = dir.clone();
             let r = std::panic::catch_unwind(|| {
@@ -521,6 +552,42 @@ fn corpus_mutations_never_panic() {
         }
     }
     eprintln!("{loaded} mutated files still loaded");
+}
+
+/// The file re-encoded with every section uncompressed and one byte of the object data
+/// (after inflating) replaced: reaches the object parser in zlib files too.
+fn mutate_objects(orig: &[u8], at: u64, value: u8) -> Vec<u8> {
+    let mut sections = Vec::new();
+    let mut p = 12;
+    while p + 13 <= orig.len() {
+        let len = u32::from_le_bytes(orig[p + 1..p + 5].try_into().unwrap()) as usize;
+        let body = &orig[p + 9..p + len - 4];
+        let data = if orig[p] == 1 {
+            miniz_oxide::inflate::decompress_to_vec_zlib(body).unwrap()
+        } else {
+            body.to_vec()
+        };
+        sections.push(data);
+        p += len;
+    }
+    let total: usize = sections.iter().map(Vec::len).sum();
+    let mut k = (at % total as u64) as usize;
+    for s in sections.iter_mut().skip(1) {
+        if k < s.len() {
+            s[k] = value;
+            break;
+        }
+        k -= s.len().min(k);
+    }
+    let mut out = FILE_IDENTIFIER.to_vec();
+    for s in &sections {
+        out.extend(section(0, s));
+    }
+    let n = out.len() as u32;
+    // TotalFileSize sits at byte 12 + 9 (section header) + 5 (object header) + 3.
+    out[29..33].copy_from_slice(&n.to_le_bytes());
+    fix_sum(&mut out, 12);
+    out
 }
 
 /// Recomputes the Adler-32 of every uncompressed section that is still well framed.
@@ -573,9 +640,17 @@ fn fingerprints(l: &Loaded) -> Vec<String> {
                     va.component_count(),
                     va.component_type(),
                     if va.component_type() == 1 {
-                        va.get_bytes(0, va.vertex_count()).unwrap().iter().map(|&x| x as i32).collect::<Vec<_>>()
+                        va.get_bytes(0, va.vertex_count())
+                            .unwrap()
+                            .iter()
+                            .map(|&x| x as i32)
+                            .collect::<Vec<_>>()
                     } else {
-                        va.get_shorts(0, va.vertex_count()).unwrap().iter().map(|&x| x as i32).collect()
+                        va.get_shorts(0, va.vertex_count())
+                            .unwrap()
+                            .iter()
+                            .map(|&x| x as i32)
+                            .collect()
                     }
                 );
             }
@@ -588,7 +663,11 @@ fn fingerprints(l: &Loaded) -> Vec<String> {
                 );
                 for k in 0..NUM_TEXTURE_UNITS as i32 {
                     let (a, sb) = vb.get_tex_coords(k).unwrap();
-                    s += &format!(" tc{k}={} {:?}", a.is_some(), sb.iter().map(|&x| r(x)).collect::<Vec<_>>());
+                    s += &format!(
+                        " tc{k}={} {:?}",
+                        a.is_some(),
+                        sb.iter().map(|&x| r(x)).collect::<Vec<_>>()
+                    );
                 }
             }
             if let Some(ib) = o.downcast::<IndexBuffer>() {
@@ -606,10 +685,19 @@ fn fingerprints(l: &Loaded) -> Vec<String> {
                 );
             }
             if let Some(m) = o.downcast::<Material>() {
-                for t in [Material::AMBIENT, Material::DIFFUSE, Material::EMISSIVE, Material::SPECULAR] {
+                for t in [
+                    Material::AMBIENT,
+                    Material::DIFFUSE,
+                    Material::EMISSIVE,
+                    Material::SPECULAR,
+                ] {
                     s += &format!(" {:x}", m.color(t).unwrap());
                 }
-                s += &format!(" sh={} tr={}", r(m.shininess()), m.is_vertex_color_tracking_enabled());
+                s += &format!(
+                    " sh={} tr={}",
+                    r(m.shininess()),
+                    m.is_vertex_color_tracking_enabled()
+                );
             }
             if let Some(c) = o.downcast::<Camera>() {
                 let (t, p) = c.get_projection_params();
@@ -683,7 +771,11 @@ fn fingerprints(l: &Loaded) -> Vec<String> {
                 }
             }
             if let Some(t) = o.downcast::<AnimationTrack>() {
-                s += &format!(" track {} ctl={}", t.target_property(), t.controller().is_some());
+                s += &format!(
+                    " track {} ctl={}",
+                    t.target_property(),
+                    t.controller().is_some()
+                );
             }
             if let Some(c) = o.downcast::<AnimationController>() {
                 s += &format!(
@@ -729,6 +821,136 @@ fn save_then_load_is_an_identity_over_the_corpus() {
     }
 }
 
+#[test]
+fn writer_authors_fog_sprite_morphing_and_alignment() {
+    // A World with a camera, a Fog appearance, a Sprite3D, a MorphingMesh with two targets,
+    // an aligned node, a keyframe-animated group and user parameters; zlib and plain.
+    let va = VertexArray::new(3, 3, 2).unwrap();
+    va.set_shorts(0, 3, &[0, 0, 0, 1, 0, 0, 0, 1, 0]).unwrap();
+    let vb = VertexBuffer::new();
+    vb.set_positions(Some(&va), 0.5, Some(&[1.0, 2.0, 3.0]))
+        .unwrap();
+    let tc = VertexArray::new(3, 2, 1).unwrap();
+    tc.set_bytes(0, 3, &[0, 0, 1, 0, 0, 1]).unwrap();
+    vb.set_tex_coords(0, Some(&tc), 2.0, Some(&[0.5, 0.25]))
+        .unwrap();
+    let targets: Vec<VertexBuffer> = (0..2)
+        .map(|k| {
+            let a = VertexArray::new(3, 3, 1).unwrap();
+            a.set_bytes(0, 3, &[k, 0, 0, 0, k, 0, 0, 0, k]).unwrap();
+            let t = VertexBuffer::new();
+            t.set_positions(Some(&a), 1.0, None).unwrap();
+            t
+        })
+        .collect();
+    let ib = TriangleStripArray::new_implicit(0, &[3])
+        .unwrap()
+        .as_index_buffer();
+    let fog = Fog::new();
+    fog.set_mode(Fog::EXPONENTIAL).unwrap();
+    fog.set_density(0.25).unwrap();
+    fog.set_color(0x123456);
+    let app = Appearance::new();
+    app.set_fog(Some(&fog));
+    app.set_layer(-5).unwrap();
+    let img = Image2D::with_pixels(Image2D::RGBA, 2, 2, &[9; 16]).unwrap();
+    let tex = Texture2D::new(&img).unwrap();
+    tex.set_translation(0.5, 0.0, 0.0);
+    app.set_texture(0, Some(&tex)).unwrap();
+    let mm = MorphingMesh::new(&vb, &targets, &ib, Some(&app)).unwrap();
+    mm.set_weights(&[0.25, 0.75]).unwrap();
+    let sprite = Sprite3D::new(true, &img, Some(&app));
+    sprite.set_crop(1, 1, -2, 2).unwrap();
+    let cam = Camera::new();
+    cam.set_perspective(60.0, 0.75, 0.5, 100.0).unwrap();
+    cam.set_orientation(30.0, 0.0, 1.0, 0.0).unwrap();
+    let world = World::new();
+    let target = Group::new();
+    world.add_child(&target).unwrap();
+    world.add_child(&cam).unwrap();
+    world.add_child(&mm).unwrap();
+    world.add_child(&sprite).unwrap();
+    sprite
+        .set_alignment(Some(&target.as_node()), Node::ORIGIN, None, Node::NONE)
+        .unwrap();
+    world.set_active_camera(&cam);
+    let ks = KeyframeSequence::new(2, 3, KeyframeSequence::LINEAR).unwrap();
+    ks.set_keyframe(0, 0, &[0.0, 0.0, 0.0]).unwrap();
+    ks.set_keyframe(1, 100, &[1.0, 2.0, 3.0]).unwrap();
+    ks.set_duration(200).unwrap();
+    let track = AnimationTrack::new(&ks, AnimationTrack::TRANSLATION).unwrap();
+    let ctl = AnimationController::new();
+    ctl.set_active_interval(0, 500).unwrap();
+    track.set_controller(Some(&ctl));
+    target.add_animation_track(&track).unwrap();
+    let mut params = UserParameters::new();
+    params.insert(3, b"hello".to_vec());
+    world.set_user_object(Some(std::rc::Rc::new(params)));
+    world.set_user_id(77);
+    for compress in [false, true] {
+        let bytes = save(&[world.as_object3d()], compress).unwrap();
+        let l = Loader::new().load_bytes(&bytes).unwrap();
+        assert_eq!(l.roots.len(), 1);
+        let w = l.roots[0].downcast::<World>().unwrap();
+        assert_eq!(w.user_id(), 77);
+        let p = w.user_object().unwrap();
+        assert_eq!(p.downcast_ref::<UserParameters>().unwrap()[&3], b"hello");
+        assert_eq!(w.child_count(), 4);
+        let mm2 = w.child(2).unwrap().downcast::<MorphingMesh>().unwrap();
+        assert_eq!(mm2.weights(), vec![0.25, 0.75]);
+        assert_eq!(mm2.morph_target_count(), 2);
+        let app2 = mm2.as_mesh().appearance(0).unwrap().unwrap();
+        assert_eq!(app2.layer(), -5);
+        let fog2 = app2.fog().unwrap();
+        assert_eq!(
+            (fog2.mode(), fog2.density(), fog2.color()),
+            (Fog::EXPONENTIAL, 0.25, 0x123456)
+        );
+        let sp = w.child(3).unwrap().downcast::<Sprite3D>().unwrap();
+        assert!(sp.is_scaled());
+        assert_eq!(
+            [sp.crop_x(), sp.crop_y(), sp.crop_width(), sp.crop_height()],
+            [1, 1, -2, 2]
+        );
+        assert_eq!(sp.alignment_target(Node::Z_AXIS).unwrap(), Node::ORIGIN);
+        assert_eq!(
+            sp.alignment_reference(Node::Z_AXIS).unwrap().unwrap(),
+            w.child(0).unwrap()
+        );
+        let cam2 = w.active_camera().unwrap();
+        assert_eq!(
+            cam2.get_projection_params(),
+            (Camera::PERSPECTIVE, Some([60.0, 0.75, 0.5, 100.0]))
+        );
+        let o = cam2.get_orientation();
+        assert!(
+            (o[0] - 30.0).abs() < 1e-3 && (o[2] - 1.0).abs() < 1e-5,
+            "{o:?}"
+        );
+        let (_, sb) = mm2.as_mesh().vertex_buffer().get_tex_coords(0).unwrap();
+        assert_eq!(sb, vec![2.0, 0.5, 0.25]);
+        // The animation survives: animate moves the target group.
+        w.animate(50).unwrap();
+        let t = w.child(0).unwrap().get_translation();
+        assert!(
+            (t[0] - 0.5).abs() < 1e-5 && (t[2] - 1.5).abs() < 1e-5,
+            "{t:?}"
+        );
+        let again = Loader::new()
+            .load_bytes(&save(&l.roots, compress).unwrap())
+            .unwrap();
+        assert_eq!(fingerprints(&again), fingerprints(&l));
+    }
+    // A cycle (a node aligned to its own parent) cannot be written.
+    let g = Group::new();
+    let child = Group::new();
+    g.add_child(&child).unwrap();
+    child
+        .set_alignment(Some(&g.as_node()), Node::ORIGIN, None, Node::NONE)
+        .unwrap();
+    assert!(save(&[g.as_object3d()], false).is_err());
+}
+
 // ---------------------------------------------------------------------------------------
 // Rendering against the reference images.
 
@@ -772,7 +994,24 @@ fn compare(ours: &[u8], reference: &Path) -> Diff {
 
 /// Images that currently match their reference within the MANIFEST's tolerance (≤ 1 % of
 /// pixels off by more than 8, mean ≤ 1.0); the others are reported, not asserted.
-const PASSING: &[&str] = &[];
+/// wizzer-teapot_t0 is left out: 1.07 % of its pixels differ by more than 8, all at texel
+/// boundaries of its nearest-filtered texture (the image is otherwise the same).
+const PASSING: &[&str] = &[
+    "cube_t0.png",
+    "desktop-m3g-skinned_t0.png",
+    "desktop-m3g-skinned_t1000.png",
+    "desktop-m3g-skinned_t2500.png",
+    "helloworld_t0.png",
+    "m3x-teapot_t0.png",
+    "memory_t0.png",
+    "monkey_step1_t0.png",
+    "monkey_step2_t0.png",
+    "robot_t0.png",
+    "robot_t1000.png",
+    "robot_t2500.png",
+    "scene_t0.png",
+    "simple_t0.png",
+];
 
 #[test]
 fn corpus_renders_compare_with_the_reference_images() {
@@ -821,4 +1060,40 @@ fn corpus_renders_compare_with_the_reference_images() {
         }
     }
     assert!(failures.is_empty(), "regressed: {failures:?}");
+}
+
+#[test]
+fn m3g_render_cli_renders_and_reports_errors() {
+    let exe = env!("CARGO_BIN_EXE_m3g-render");
+    let tmp = std::env::temp_dir().join(format!("m3g-render-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).unwrap();
+    let out = tmp.join("simple.png");
+    let st = std::process::Command::new(exe)
+        .arg(corpus_dir().join("simple.m3g"))
+        .args(["--time", "0", "--size", "64x48", "--out"])
+        .arg(&out)
+        .status()
+        .unwrap();
+    assert!(st.success());
+    let img = image::open(&out).unwrap();
+    assert_eq!((img.width(), img.height()), (64, 48));
+    assert_eq!(img.color(), image::ColorType::Rgb8);
+    // Bad arguments and bad files exit non-zero with a message.
+    let bad = tmp.join("bad.m3g");
+    std::fs::write(&bad, &MINIMAL[..50]).unwrap();
+    for args in [
+        vec![],
+        vec!["--size".to_string(), "0x5".into(), "x.m3g".into()],
+        vec!["--time".to_string(), "soon".into(), "x.m3g".into()],
+        vec![tmp.join("missing.m3g").display().to_string()],
+        vec![bad.display().to_string()],
+    ] {
+        let o = std::process::Command::new(exe)
+            .args(&args)
+            .output()
+            .unwrap();
+        assert!(!o.status.success(), "{args:?}");
+        assert!(String::from_utf8_lossy(&o.stderr).starts_with("m3g-render: "));
+    }
+    let _ = std::fs::remove_dir_all(&tmp);
 }

@@ -69,8 +69,14 @@ fn run() -> Result<PathBuf, String> {
     let rgb = render_roots(&loaded.roots, a.time, a.size.0, a.size.1)
         .map_err(|e| format!("{}: {e}", a.file.display()))?;
     let out = a.out.unwrap_or_else(|| a.file.with_extension("png"));
-    image::save_buffer(&out, &rgb, a.size.0, a.size.1, image::ExtendedColorType::Rgb8)
-        .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+    image::save_buffer(
+        &out,
+        &rgb,
+        a.size.0,
+        a.size.1,
+        image::ExtendedColorType::Rgb8,
+    )
+    .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
     Ok(out)
 }
 

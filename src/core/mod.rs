@@ -1103,7 +1103,17 @@ mod tests {
         for _ in 0..30 {
             let x = rng.next() * 6.0 - 3.0;
             // A wall receding to the right: w changes along each row.
-            pos.extend([-3.0, x - 1.0, -1.0, -3.0, x + 1.0, -1.0, 20.0, x * 5.0, -40.0]);
+            pos.extend([
+                -3.0,
+                x - 1.0,
+                -1.0,
+                -3.0,
+                x + 1.0,
+                -1.0,
+                20.0,
+                x * 5.0,
+                -40.0,
+            ]);
             for _ in 0..3 {
                 col.extend([rng.next(), rng.next(), rng.next(), 1.0]);
             }
@@ -1148,7 +1158,10 @@ mod tests {
         // linear error between divides is bounded by the curvature of 1/w over 8 pixels.
         assert!(errors[1].mean < 0.1 && errors[2] == errors[1], "{errors:?}");
         assert!(errors[0].mean < 1.0 && errors[0].psnr > 40.0, "{errors:?}");
-        assert!(errors[0].mean > errors[1].mean, "the shortcut is taken: {errors:?}");
+        assert!(
+            errors[0].mean > errors[1].mean,
+            "the shortcut is taken: {errors:?}"
+        );
         eprintln!("receding triangles, FASTEST / DONT_CARE / NICEST: {errors:?}");
     }
 

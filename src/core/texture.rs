@@ -316,17 +316,17 @@ fn next_generation() -> u64 {
 }
 
 /// Replaces levels 1 .. of `chain` with box-filtered reductions of its level 0.
-fn generate_chain(chain: &mut Vec<Option<Arc<Image>>>) {
+fn generate_chain(chain: &mut [Option<Arc<Image>>]) {
     let Some(mut img) = chain[0].as_deref().cloned() else {
         return;
     };
-    for l in 1..chain.len() {
+    for slot in &mut chain[1..] {
         if img.width <= 1 && img.height <= 1 {
-            chain[l] = None;
+            *slot = None;
             continue;
         }
         img = img.half();
-        chain[l] = Some(Arc::new(img.clone()));
+        *slot = Some(Arc::new(img.clone()));
     }
 }
 
@@ -347,9 +347,12 @@ pub struct Texture {
     /// `OES_texture_cube_map`: set once the texture was first bound as a cube map. Its
     /// POSITIVE_X face is `levels`; the other five faces, in the order of the face enums,
     /// are here.
-    cube: Option<Box<[Vec<Option<Arc<Image>>>; 5]>>,
+    cube: Option<Box<[Chain; 5]>>,
     version: u64,
 }
+
+/// One face's mipmap levels.
+type Chain = Vec<Option<Arc<Image>>>;
 
 impl Default for Texture {
     fn default() -> Texture {
@@ -459,7 +462,7 @@ impl Texture {
         }
         self.generate_mipmaps();
         if let Some(c) = &mut self.cube {
-            c.iter_mut().for_each(generate_chain);
+            c.iter_mut().for_each(|f| generate_chain(f));
         }
         self.touch();
         true
@@ -977,6 +980,7 @@ pub fn etc1_block(block: [u8; 8]) -> [[u8; 3]; 16] {
     let flip = hi & 1 != 0;
     // Base colors of the two subblocks, 8 bits per channel.
     let mut base = [[0i32; 3]; 2];
+    #[allow(clippy::needless_range_loop)] // c indexes both subblocks' channels
     for c in 0..3 {
         let shift = 24 - 8 * c as u32;
         if diff {
@@ -995,7 +999,11 @@ pub fn etc1_block(block: [u8; 8]) -> [[u8; 3]; 16] {
     let mut out = [[0u8; 3]; 16];
     for x in 0..4 {
         for y in 0..4 {
-            let sub = if flip { (y >= 2) as usize } else { (x >= 2) as usize };
+            let sub = if flip {
+                (y >= 2) as usize
+            } else {
+                (x >= 2) as usize
+            };
             let i = x * 4 + y;
             let msb = (lo >> (16 + i)) & 1;
             let lsb = (lo >> i) & 1;
@@ -1087,7 +1095,7 @@ mod tests {
         // table 0, right subblock base (0xf, 0xe, 0xd) with table 7. All indices 0 (+a)
         // except pixel (x=1, y=2): index 3 (-b); pixel (x=3, y=0): index 1 (+b).
         let hi: u32 = 0x1f << 24 | 0x2e << 16 | 0x3d << 8 | (7 << 2);
-        let i_12 = 1 * 4 + 2;
+        let i_12 = 4 + 2; // x * 4 + y
         let i_30 = 3 * 4;
         let lo: u32 = (1 << (16 + i_12)) | (1 << i_12) | (1 << i_30);
         let mut b = [0u8; 8];
@@ -1096,8 +1104,9 @@ mod tests {
         let px = etc1_block(b);
         assert_eq!(px[0], [19, 36, 53]); // (0, 0): +2
         assert_eq!(px[2 * 4 + 1], [9, 26, 43]); // (1, 2): -8
-        assert_eq!(px[0 * 4 + 2], [255, 255, 255]); // (2, 0): 0xff.. + 47, clamped
+        assert_eq!(px[2], [255, 255, 255]); // (2, 0): (255, 238, 221) + 47, clamped
         assert_eq!(px[3], [255, 255, 255]); // (3, 0): +183 clamped
+
         // Differential mode with flip: top base 5-bit (16, 8, 4), delta (-1, +3, 0).
         let hi: u32 = (16 << 3 | 7) << 24 | (8 << 3 | 3) << 16 | (4 << 3) << 8 | 3;
         b[..4].copy_from_slice(&hi.to_be_bytes());
@@ -1117,7 +1126,12 @@ mod tests {
     #[test]
     fn bgra_swaps_red_and_blue() {
         let rect = PixelRect::new(1, 1, 4, 1).unwrap();
-        let p = unpack(BaseFormat::Rgba, PixelType::UnsignedByteBgra, rect, &[1, 2, 3, 4]);
+        let p = unpack(
+            BaseFormat::Rgba,
+            PixelType::UnsignedByteBgra,
+            rect,
+            &[1, 2, 3, 4],
+        );
         assert_eq!(p[0].to_le_bytes(), [3, 2, 1, 4]);
     }
 

@@ -168,7 +168,11 @@ pub enum Attachment {
     Renderbuffer(GLuint),
     /// A texture level; `face` 0 for a 2D texture, 1 ..= 6 for the cube map faces
     /// POSITIVE_X .. NEGATIVE_Z.
-    Texture { name: GLuint, level: usize, face: u8 },
+    Texture {
+        name: GLuint,
+        level: usize,
+        face: u8,
+    },
 }
 
 /// A framebuffer object's attachment points: color 0, depth, stencil.
@@ -471,11 +475,7 @@ impl Context {
         };
         let shared = self.shared.clone();
         let mut o = lock_objects(&shared);
-        store(
-            &mut o,
-            &super::context::lock_target(surface.as_ref()),
-            &key,
-        );
+        store(&mut o, &super::context::lock_target(surface.as_ref()), &key);
         // Record the versions the write-back gave, so the target is not reloaded for them.
         let new_key: Key = std::array::from_fn(|p| {
             let (a, v) = key[p];
@@ -601,7 +601,13 @@ impl Context {
         name != 0 && lock_objects(&self.shared).renderbuffers.get(name).is_some()
     }
 
-    pub fn renderbuffer_storage(&mut self, target: GLenum, internal_format: GLenum, w: i32, h: i32) {
+    pub fn renderbuffer_storage(
+        &mut self,
+        target: GLenum,
+        internal_format: GLenum,
+        w: i32,
+        h: i32,
+    ) {
         if target != GL_RENDERBUFFER_OES {
             return self.set_error(GL_INVALID_ENUM);
         }
@@ -813,13 +819,14 @@ impl Context {
             (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_OES, Attachment::Texture { level, .. }) => {
                 Some(level as i32)
             }
-            (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_OES, Attachment::Texture { face, .. }) => {
-                Some(if face == 0 {
-                    0
-                } else {
-                    (GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES + face as u32 - 1) as i32
-                })
-            }
+            (
+                GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_OES,
+                Attachment::Texture { face, .. },
+            ) => Some(if face == 0 {
+                0
+            } else {
+                (GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES + face as u32 - 1) as i32
+            }),
             _ => None,
         };
         if v.is_none() {

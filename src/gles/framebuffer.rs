@@ -61,7 +61,9 @@ impl Context {
         let format = if self.fbo.bound != 0 {
             self.current_draw_format().map(|f| f.color)
         } else {
-            self.read.as_ref().map(|r| lock_target(r.as_ref()).format().color)
+            self.read
+                .as_ref()
+                .map(|r| lock_target(r.as_ref()).format().color)
         };
         match format {
             Some(ColorFormat::Rgba4444) => (GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4),

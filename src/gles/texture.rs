@@ -510,9 +510,13 @@ impl Context {
             return Err(GL_INVALID_ENUM);
         }
         let (f, t) = client_format(format, ty)?;
-        let internal = u32::try_from(internal_format)
-            .ok()
-            .and_then(|i| if i == GL_BGRA_EXT { Some(BaseFormat::Rgba) } else { base_format(i) });
+        let internal = u32::try_from(internal_format).ok().and_then(|i| {
+            if i == GL_BGRA_EXT {
+                Some(BaseFormat::Rgba)
+            } else {
+                base_format(i)
+            }
+        });
         if internal.is_none() || !valid_image_size(level, width, height) || border != 0 {
             return Err(GL_INVALID_VALUE);
         }

@@ -88,8 +88,8 @@ pub use appearance::{
 pub use error::{M3gError, Result};
 pub use graphics3d::{Graphics3D, Property, RenderStats, MAX_LIGHTS, MAX_VIEWPORT_DIMENSION};
 pub use image::Image2D;
-pub use loader::{LoadError, Loader};
 pub use keyframe::KeyframeSequence;
+pub use loader::{LoadError, Loader};
 pub use mesh::{Mesh, Sprite3D, MAX_SPRITE_CROP_DIMENSION};
 pub use morphing_mesh::MorphingMesh;
 pub use node::{Group, GroupExt, Node, NodeExt, World};

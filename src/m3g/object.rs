@@ -279,12 +279,14 @@ macro_rules! class_data {
             }
             #[allow(dead_code)]
             pub(crate) fn dm(&self) -> std::cell::RefMut<'_, $Data> {
-                std::cell::RefMut::map(self.0.borrow_mut(), |i| match {
-                    i.gen = i.gen.wrapping_add(1);
-                    &mut i.kind
-                } {
-                    $crate::m3g::object::Kind::$Variant(d) => d,
-                    _ => unreachable!("handle of the wrong class"),
+                std::cell::RefMut::map(self.0.borrow_mut(), |i| {
+                    match {
+                        i.gen = i.gen.wrapping_add(1);
+                        &mut i.kind
+                    } {
+                        $crate::m3g::object::Kind::$Variant(d) => d,
+                        _ => unreachable!("handle of the wrong class"),
+                    }
                 })
             }
         }

@@ -256,8 +256,7 @@ fn write_tf(w: &mut W, r: &ObjRef) -> WResult {
         t.orientation
     };
     let identity_q = q.x == 0.0 && q.y == 0.0 && q.z == 0.0;
-    let comp =
-        t.translation != glam::Vec3::ZERO || t.scale != glam::Vec3::ONE || !identity_q;
+    let comp = t.translation != glam::Vec3::ZERO || t.scale != glam::Vec3::ONE || !identity_q;
     w.bool(comp);
     if comp {
         w.f32s(&t.translation.to_array())?;
@@ -335,7 +334,11 @@ fn write_object(w: &mut W, r: &ObjRef) -> std::result::Result<u8, WriteError> {
             w.idx(a.fog.as_ref().map(|x| &x.0));
             w.idx(a.polygon_mode.as_ref().map(|x| &x.0));
             w.idx(a.material.as_ref().map(|x| &x.0));
-            let n = a.textures.iter().rposition(Option::is_some).map_or(0, |k| k + 1);
+            let n = a
+                .textures
+                .iter()
+                .rposition(Option::is_some)
+                .map_or(0, |k| k + 1);
             if a.textures[..n].iter().any(Option::is_none) {
                 return Err(WriteError(
                     "an Appearance has a gap in its texture units".into(),
@@ -548,7 +551,11 @@ fn write_object(w: &mut W, r: &ObjRef) -> std::result::Result<u8, WriteError> {
             w.f32(v.pos_scale)?;
             w.idx(v.normals.as_ref().map(|x| &x.0));
             w.idx(v.colors.as_ref().map(|x| &x.0));
-            let n = v.texcoords.iter().rposition(Option::is_some).map_or(0, |k| k + 1);
+            let n = v
+                .texcoords
+                .iter()
+                .rposition(Option::is_some)
+                .map_or(0, |k| k + 1);
             if v.texcoords[..n].iter().any(Option::is_none) {
                 return Err(WriteError(
                     "a VertexBuffer has a gap in its texture-coordinate units".into(),

@@ -21,7 +21,9 @@ pub unsafe extern "C" fn glGenFramebuffersOES(n: GLsizei, framebuffers: *mut GLu
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteFramebuffersOES(n: GLsizei, framebuffers: *const GLuint) {
     // SAFETY: the application passes `n` names.
-    with_context((), |c| c.delete_framebuffers(n, unsafe { names(n, framebuffers) }))
+    with_context((), |c| {
+        c.delete_framebuffers(n, unsafe { names(n, framebuffers) })
+    })
 }
 
 #[no_mangle]

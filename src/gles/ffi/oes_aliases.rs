@@ -21,6 +21,8 @@ pub extern "C" fn glClearDepthxOES(depth: GLclampx) {
     glClearDepthx(depth)
 }
 
+/// # Safety
+/// As for `glClipPlanex`.
 #[no_mangle]
 pub unsafe extern "C" fn glClipPlanexOES(plane: GLenum, equation: *const GLfixed) {
     // SAFETY: the caller's contract for `glClipPlanexOES` is that of `glClipPlanex`.
@@ -42,6 +44,8 @@ pub extern "C" fn glFogxOES(pname: GLenum, param: GLfixed) {
     glFogx(pname, param)
 }
 
+/// # Safety
+/// As for `glFogxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glFogxvOES(pname: GLenum, params: *const GLfixed) {
     // SAFETY: the caller's contract for `glFogxvOES` is that of `glFogxv`.
@@ -60,24 +64,32 @@ pub extern "C" fn glFrustumxOES(
     glFrustumx(l, r, b, t, n, f)
 }
 
+/// # Safety
+/// As for `glGetClipPlanex`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetClipPlanexOES(plane: GLenum, equation: *mut GLfixed) {
     // SAFETY: the caller's contract for `glGetClipPlanexOES` is that of `glGetClipPlanex`.
     unsafe { glGetClipPlanex(plane, equation) }
 }
 
+/// # Safety
+/// As for `glGetFixedv`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetFixedvOES(pname: GLenum, params: *mut GLfixed) {
     // SAFETY: the caller's contract for `glGetFixedvOES` is that of `glGetFixedv`.
     unsafe { glGetFixedv(pname, params) }
 }
 
+/// # Safety
+/// As for `glGetTexEnvxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexEnvxvOES(target: GLenum, pname: GLenum, params: *mut GLfixed) {
     // SAFETY: the caller's contract for `glGetTexEnvxvOES` is that of `glGetTexEnvxv`.
     unsafe { glGetTexEnvxv(target, pname, params) }
 }
 
+/// # Safety
+/// As for `glGetTexParameterxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexParameterxvOES(
     target: GLenum,
@@ -93,6 +105,8 @@ pub extern "C" fn glLightModelxOES(pname: GLenum, param: GLfixed) {
     glLightModelx(pname, param)
 }
 
+/// # Safety
+/// As for `glLightModelxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glLightModelxvOES(pname: GLenum, params: *const GLfixed) {
     // SAFETY: the caller's contract for `glLightModelxvOES` is that of `glLightModelxv`.
@@ -104,6 +118,8 @@ pub extern "C" fn glLightxOES(light: GLenum, pname: GLenum, param: GLfixed) {
     glLightx(light, pname, param)
 }
 
+/// # Safety
+/// As for `glLightxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glLightxvOES(light: GLenum, pname: GLenum, params: *const GLfixed) {
     // SAFETY: the caller's contract for `glLightxvOES` is that of `glLightxv`.
@@ -115,6 +131,8 @@ pub extern "C" fn glLineWidthxOES(width: GLfixed) {
     glLineWidthx(width)
 }
 
+/// # Safety
+/// As for `glLoadMatrixx`.
 #[no_mangle]
 pub unsafe extern "C" fn glLoadMatrixxOES(m: *const GLfixed) {
     // SAFETY: the caller's contract for `glLoadMatrixxOES` is that of `glLoadMatrixx`.
@@ -126,12 +144,16 @@ pub extern "C" fn glMaterialxOES(face: GLenum, pname: GLenum, param: GLfixed) {
     glMaterialx(face, pname, param)
 }
 
+/// # Safety
+/// As for `glMaterialxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glMaterialxvOES(face: GLenum, pname: GLenum, params: *const GLfixed) {
     // SAFETY: the caller's contract for `glMaterialxvOES` is that of `glMaterialxv`.
     unsafe { glMaterialxv(face, pname, params) }
 }
 
+/// # Safety
+/// As for `glMultMatrixx`.
 #[no_mangle]
 pub unsafe extern "C" fn glMultMatrixxOES(m: *const GLfixed) {
     // SAFETY: the caller's contract for `glMultMatrixxOES` is that of `glMultMatrixx`.
@@ -166,6 +188,8 @@ pub extern "C" fn glOrthoxOES(
     glOrthox(l, r, b, t, n, f)
 }
 
+/// # Safety
+/// As for `glPointParameterxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glPointParameterxvOES(pname: GLenum, params: *const GLfixed) {
     // SAFETY: the caller's contract for `glPointParameterxvOES` is that of `glPointParameterxv`.
@@ -197,6 +221,8 @@ pub extern "C" fn glTexEnvxOES(target: GLenum, pname: GLenum, param: GLfixed) {
     glTexEnvx(target, pname, param)
 }
 
+/// # Safety
+/// As for `glTexEnvxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnvxvOES(target: GLenum, pname: GLenum, params: *const GLfixed) {
     // SAFETY: the caller's contract for `glTexEnvxvOES` is that of `glTexEnvxv`.
@@ -208,6 +234,8 @@ pub extern "C" fn glTexParameterxOES(target: GLenum, pname: GLenum, param: GLfix
     glTexParameterx(target, pname, param)
 }
 
+/// # Safety
+/// As for `glTexParameterxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameterxvOES(
     target: GLenum,
@@ -223,12 +251,16 @@ pub extern "C" fn glTranslatexOES(x: GLfixed, y: GLfixed, z: GLfixed) {
     glTranslatex(x, y, z)
 }
 
+/// # Safety
+/// As for `glGetLightxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetLightxvOES(light: GLenum, pname: GLenum, params: *mut GLfixed) {
     // SAFETY: the caller's contract for `glGetLightxvOES` is that of `glGetLightxv`.
     unsafe { glGetLightxv(light, pname, params) }
 }
 
+/// # Safety
+/// As for `glGetMaterialxv`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetMaterialxvOES(face: GLenum, pname: GLenum, params: *mut GLfixed) {
     // SAFETY: the caller's contract for `glGetMaterialxvOES` is that of `glGetMaterialxv`.
@@ -250,6 +282,8 @@ pub extern "C" fn glClearDepthfOES(depth: GLclampf) {
     glClearDepthf(depth)
 }
 
+/// # Safety
+/// As for `glClipPlanef`.
 #[no_mangle]
 pub unsafe extern "C" fn glClipPlanefOES(plane: GLenum, equation: *const GLfloat) {
     // SAFETY: the caller's contract for `glClipPlanefOES` is that of `glClipPlanef`.
@@ -273,6 +307,8 @@ pub extern "C" fn glFrustumfOES(
     glFrustumf(l, r, b, t, n, f)
 }
 
+/// # Safety
+/// As for `glGetClipPlanef`.
 #[no_mangle]
 pub unsafe extern "C" fn glGetClipPlanefOES(plane: GLenum, equation: *mut GLfloat) {
     // SAFETY: the caller's contract for `glGetClipPlanefOES` is that of `glGetClipPlanef`.

@@ -255,7 +255,10 @@ impl Loader {
                 .display()
                 .to_string();
             (b, key, p.parent().map(Path::to_path_buf))
-        } else if let Some(path) = uri.strip_prefix("file://").filter(|_| self.resolver.is_none()) {
+        } else if let Some(path) = uri
+            .strip_prefix("file://")
+            .filter(|_| self.resolver.is_none())
+        {
             let p = PathBuf::from(path);
             let b = std::fs::read(&p)
                 .map_err(|e| LoadError::file(format!("cannot read {}: {e}", p.display())))?;

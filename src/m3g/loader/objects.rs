@@ -190,8 +190,10 @@ impl<'a> Cur<'a> {
     }
     fn rgba(&mut self, f: &str) -> LoadResult<i32> {
         let b = self.take(4, f)?;
-        Ok((((b[3] as u32) << 24) | ((b[0] as u32) << 16) | ((b[1] as u32) << 8) | b[2] as u32)
-            as i32)
+        Ok(
+            (((b[3] as u32) << 24) | ((b[0] as u32) << 16) | ((b[1] as u32) << 8) | b[2] as u32)
+                as i32,
+        )
     }
     fn string(&mut self, f: &str) -> LoadResult<String> {
         let rest = &self.d[self.p..];
@@ -211,7 +213,10 @@ impl<'a> Cur<'a> {
         if n.saturating_mul(elem) > self.left() {
             return Err(self.err(
                 f,
-                format!("count {n} overruns the object data ({} bytes left)", self.left()),
+                format!(
+                    "count {n} overruns the object data ({} bytes left)",
+                    self.left()
+                ),
             ));
         }
         Ok(n)
@@ -366,7 +371,12 @@ pub(crate) fn parse_file(loader: &mut Loader, bytes: &[u8]) -> LoadResult<Loaded
                     )));
                 }
                 let out = miniz_oxide::inflate::decompress_to_vec_zlib_with_limit(body, ulen)
-                    .map_err(|e| serr(format!("zlib data invalid or longer than UncompressedLength {ulen}: {:?}", e.status)))?;
+                    .map_err(|e| {
+                        serr(format!(
+                            "zlib data invalid or longer than UncompressedLength {ulen}: {:?}",
+                            e.status
+                        ))
+                    })?;
                 if out.len() != ulen {
                     return Err(serr(format!(
                         "zlib data inflates to {} bytes, UncompressedLength says {ulen}",
@@ -413,8 +423,6 @@ pub(crate) fn parse_file(loader: &mut Loader, bytes: &[u8]) -> LoadResult<Loaded
                     ));
                 }
                 st.header = Some(parse_header(od)?);
-                st.slots.push(None); // keeps index 1 taken even for a bad push order
-                st.slots.truncate(2);
                 continue;
             }
             let hdr = st.header.as_ref().unwrap();
@@ -429,9 +437,7 @@ pub(crate) fn parse_file(loader: &mut Loader, bytes: &[u8]) -> LoadResult<Loaded
                 }
                 1..=22 => {
                     if hdr.has_external_references && section == 1 {
-                        return Err(oerr(
-                            "section 1 may hold only external references".into(),
-                        ));
+                        return Err(oerr("section 1 may hold only external references".into()));
                     }
                 }
                 _ => return Err(oerr(format!("object type {ty} is reserved"))),
@@ -526,8 +532,11 @@ struct O3d {
     params: UserParameters,
 }
 
+/// Translation, scale, orientation angle and axis.
+type Components = ([f32; 3], [f32; 3], f32, [f32; 3]);
+
 struct TfPart {
-    comp: Option<([f32; 3], [f32; 3], f32, [f32; 3])>,
+    comp: Option<Components>,
     matrix: Option<[f32; 16]>,
 }
 
@@ -882,7 +891,10 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                 if matches!(ch.raw().borrow().kind, Kind::World(_)) {
                     return Err(c.err(&f, "a World cannot be a child"));
                 }
-                if ch.parent().is_some_and(|p| p.as_object3d() != g.as_object3d()) {
+                if ch
+                    .parent()
+                    .is_some_and(|p| p.as_object3d() != g.as_object3d())
+                {
                     return Err(c.err(&f, "the node already has a parent"));
                 }
                 c.api(&f, g.add_child(&ch))?;
@@ -929,12 +941,12 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                         ));
                     }
                     if (n as u64) < px {
-                        return Err(c.err(
-                            "pixels",
-                            format!("{n} indices for {w}x{h} pixels"),
-                        ));
+                        return Err(c.err("pixels", format!("{n} indices for {w}x{h} pixels")));
                     }
-                    c.api("pixels", Image2D::with_palette(format, w, h, pixels, palette))?
+                    c.api(
+                        "pixels",
+                        Image2D::with_palette(format, w, h, pixels, palette),
+                    )?
                 } else {
                     if (n as u64) < px * bpp {
                         return Err(c.err(
@@ -971,7 +983,9 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                             _ => c.u16("indices")? as u32,
                         };
                         if x > 65535 {
-                            return Err(c.err(&format!("indices[{k}]"), format!("index {x} > 65535")));
+                            return Err(
+                                c.err(&format!("indices[{k}]"), format!("index {x} > 65535"))
+                            );
                         }
                         v.push(x as i32);
                     }
@@ -987,7 +1001,10 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             for k in 0..n {
                 let l = c.u32("stripLengths")?;
                 if l < 3 {
-                    return Err(c.err(&format!("stripLengths[{k}]"), format!("strip length {l} < 3")));
+                    return Err(c.err(
+                        &format!("stripLengths[{k}]"),
+                        format!("strip length {l} < 3"),
+                    ));
                 }
                 sum += l as u64;
                 lengths.push(l.min(i32::MAX as u32) as i32);
@@ -1000,7 +1017,10 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                             format!("strips from {start} over {sum} vertices pass index 65535"),
                         ));
                     }
-                    c.api("stripLengths", TriangleStripArray::new_implicit(start as i32, &lengths))?
+                    c.api(
+                        "stripLengths",
+                        TriangleStripArray::new_implicit(start as i32, &lengths),
+                    )?
                 }
                 Some(ix) => {
                     if (ix.len() as u64) < sum {
@@ -1070,10 +1090,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             }
             let vb = typed::<VertexBuffer>(vb);
             let mesh = match ty {
-                14 => c.api(
-                    "submeshCount",
-                    Mesh::with_submeshes(&vb, &ibs, Some(&apps)),
-                )?,
+                14 => c.api("submeshCount", Mesh::with_submeshes(&vb, &ibs, Some(&apps)))?,
                 15 => {
                     let m = c.count("morphTargetCount", 8)?;
                     if m == 0 {
@@ -1143,7 +1160,10 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                 return Err(c.err("vertexCount", "vertex count is 0"));
             }
             let raw = c.take(n * comps * size, "vertices")?;
-            let va = c.api("vertexCount", VertexArray::new(n as i32, comps as i32, size as i32))?;
+            let va = c.api(
+                "vertexCount",
+                VertexArray::new(n as i32, comps as i32, size as i32),
+            )?;
             if size == 1 {
                 let mut v: Vec<i8> = raw.iter().map(|&b| b as i8).collect();
                 if enc == 1 {
@@ -1233,10 +1253,7 @@ fn parse_keyframes(st: &mut State, c: &mut Cur) -> LoadResult<Object3D> {
         return Err(c.err("keyframeCount", "no keyframes"));
     }
     if (interp == 177 || interp == 179) && comps != 4 {
-        return Err(c.err(
-            "componentCount",
-            "SLERP and SQUAD need 4 components",
-        ));
+        return Err(c.err("componentCount", "SLERP and SQUAD need 4 components"));
     }
     if first as usize >= keys || last as usize >= keys {
         return Err(c.err(
