@@ -611,11 +611,71 @@ impl Texture {
 }
 
 impl Texture {
+    /// Whether a cube map can be sampled with its current filters: the six level-0 images
+    /// are square with one size and format, and with a mipmap filter every face is
+    /// mipmap-complete (ES 1.1 with `OES_texture_cube_map`: cube complete).
+    pub fn cube_complete(&self) -> bool {
+        if !self.base_cube_complete() {
+            return false;
+        }
+        if !self.min_filter.uses_mipmaps() {
+            return true;
+        }
+        let base = self.level(0).expect("cube complete");
+        (1..=6u8).all(|face| {
+            let (mut w, mut l) = (base.width, 0);
+            while w > 1 {
+                w /= 2;
+                l += 1;
+                match self.face_level(face, l) {
+                    Some(i) if i.width == w && i.height == w && i.format == base.format => {}
+                    _ => return false,
+                }
+            }
+            true
+        })
+    }
+
+    /// A snapshot of a cube map for sampling (see [`Texture::sampler`]): `None` unless it
+    /// is cube complete. Faces are sampled with CLAMP_TO_EDGE whatever the wrap modes say.
+    fn cube_sampler(&self) -> Option<Arc<Sampler>> {
+        if !self.cube_complete() {
+            return None;
+        }
+        let base = self.level(0)?;
+        let q = if self.min_filter.uses_mipmaps() {
+            base.width.ilog2() as usize
+        } else {
+            0
+        };
+        let faces: [Sampler; 6] = std::array::from_fn(|f| {
+            let chain = self.chain(f as u8 + 1).expect("cube faces");
+            Sampler::new(
+                chain[..=q]
+                    .iter()
+                    .map(|l| l.clone().expect("complete"))
+                    .collect(),
+                self.min_filter,
+                self.mag_filter,
+                Wrap::ClampToEdge,
+                Wrap::ClampToEdge,
+            )
+        });
+        let mut s = faces[0].clone();
+        s.cube = Some(Arc::new(faces));
+        Some(Arc::new(s))
+    }
+}
+
+impl Texture {
     /// A snapshot of the texture for sampling, sharing its images: `None` when the texture
     /// is incomplete for its filters (the unit then acts as if texturing were disabled,
     /// ES 1.1 §3.7.10). Pending draws hold the snapshot, so they keep reading these images
     /// even if the texture is redefined or deleted before they are rasterized.
     pub fn sampler(&self) -> Option<Arc<Sampler>> {
+        if self.cube.is_some() {
+            return self.cube_sampler();
+        }
         if !self.is_complete() {
             return None;
         }
@@ -658,6 +718,10 @@ pub struct Sampler {
     pub format: BaseFormat,
     /// The minification / magnification switch-over point.
     pub c: f32,
+    /// `OES_texture_cube_map`: for a cube map, the six faces' samplers (POSITIVE_X,
+    /// NEGATIVE_X, POSITIVE_Y, NEGATIVE_Y, POSITIVE_Z, NEGATIVE_Z), each clamping to its
+    /// edges; this sampler is then the POSITIVE_X face's.
+    pub cube: Option<Arc<[Sampler; 6]>>,
 }
 
 impl PartialEq for Sampler {
@@ -670,6 +734,11 @@ impl PartialEq for Sampler {
                 .zip(&o.levels)
                 .all(|(a, b)| Arc::ptr_eq(a, b))
             && (self.min, self.mag, self.wrap_s, self.wrap_t) == (o.min, o.mag, o.wrap_s, o.wrap_t)
+            && match (&self.cube, &o.cube) {
+                (None, None) => true,
+                (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+                _ => false,
+            }
     }
 }
 
@@ -714,6 +783,7 @@ impl Sampler {
             wrap_t,
             format,
             c,
+            cube: None,
         }
     }
 

@@ -130,6 +130,7 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_framebuffer_object",
     "GL_OES_compressed_ETC1_RGB8_texture",
     "GL_EXT_texture_format_BGRA8888",
+    "GL_OES_draw_texture",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
