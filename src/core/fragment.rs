@@ -122,13 +122,18 @@ struct TexSpan {
     w: f32,
     h: f32,
     affine: bool,
+    /// r/w and its steps, for cube maps (whose s/w, t/w above are then undivided).
+    r0: f32,
+    dr: f32,
+    ry: f32,
 }
 
 impl TexSpan {
     #[inline]
-    fn new(p: &TexPlanes, px: i32, py: i32, (w, h): (u32, u32)) -> TexSpan {
+    fn new(p: &TexPlanes, px: i32, py: i32, (w, h): (u32, u32), cube: bool) -> TexSpan {
         let q0 = p.q.at(px, py);
-        let affine = p.q.dx == 0.0 && p.q.dy == 0.0 && q0 != 0.0;
+        // Cube maps ignore q (it only scales the direction), so nothing is divided.
+        let affine = !cube && p.q.dx == 0.0 && p.q.dy == 0.0 && q0 != 0.0;
         let k = if affine { 1.0 / q0 } else { 1.0 };
         TexSpan {
             s0: (p.s.at(px, py) * k) as f32,
@@ -143,8 +148,86 @@ impl TexSpan {
             w: w as f32,
             h: h as f32,
             affine,
+            r0: p.r.at(px, py) as f32,
+            dr: p.r.dx as f32,
+            ry: p.r.dy as f32,
         }
     }
+
+    /// A cube map's value at pixel `i` (`OES_texture_cube_map`): the face whose axis is
+    /// the largest component of (s, t, r) (ties go to x, then y), the face coordinates
+    /// ((sc/|ma| + 1)/2, (tc/|ma| + 1)/2) of the specification's table, and λ from their
+    /// exact derivatives (each a ratio of two quantities linear in window space: the 1/w
+    /// of perspective and any q cancel), sampled in that face, in [0, 1].
+    #[inline]
+    fn cube(&self, faces: &[Sampler; 6], i: usize) -> [f32; 4] {
+        let fi = i as f32;
+        // (value, d/dx, d/dy) of s/w, t/w, r/w.
+        let s = (self.s0 + self.ds * fi, self.ds, self.sy);
+        let t = (self.t0 + self.dt * fi, self.dt, self.ty);
+        let r = (self.r0 + self.dr * fi, self.dr, self.ry);
+        let (face, sc, tc, ma) = cube_face(s, t, r);
+        let faces = &faces[face];
+        let (u, v, rho2) = cube_coords(sc, tc, ma, faces.size().0 as f32);
+        faces.sample(u, v, Sampler::lambda(rho2))
+    }
+}
+
+/// A value linear in window space at a pixel, with its x and y derivatives.
+type Lin = (f32, f32, f32);
+
+fn neg((a, b, c): Lin) -> Lin {
+    (-a, -b, -c)
+}
+
+/// Face selection (`OES_texture_cube_map`'s table): the face index (POSITIVE_X,
+/// NEGATIVE_X, POSITIVE_Y, NEGATIVE_Y, POSITIVE_Z, NEGATIVE_Z) and sc, tc, ma.
+#[inline]
+fn cube_face(s: Lin, t: Lin, r: Lin) -> (usize, Lin, Lin, Lin) {
+    let (ax, ay, az) = (s.0.abs(), t.0.abs(), r.0.abs());
+    if ax >= ay && ax >= az {
+        if s.0 >= 0.0 {
+            (0, neg(r), neg(t), s)
+        } else {
+            (1, r, neg(t), s)
+        }
+    } else if ay >= az {
+        if t.0 >= 0.0 {
+            (2, s, r, t)
+        } else {
+            (3, s, neg(r), t)
+        }
+    } else if r.0 >= 0.0 {
+        (4, s, neg(t), r)
+    } else {
+        (5, neg(s), neg(t), r)
+    }
+}
+
+/// Face coordinates ((sc/|ma| + 1)/2, (tc/|ma| + 1)/2) and ρ² for a face `size` texels
+/// wide, from the quotient rule on the linear sc, tc and ma.
+#[inline]
+fn cube_coords(sc: Lin, tc: Lin, ma: Lin, size: f32) -> (f32, f32, f32) {
+    let m = if ma.0 < 0.0 { neg(ma) } else { ma };
+    let inv = 1.0 / m.0;
+    let u = 0.5 * (sc.0 * inv + 1.0);
+    let v = 0.5 * (tc.0 * inv + 1.0);
+    let k = 0.5 * inv * inv * size;
+    let ux = (sc.1 * m.0 - sc.0 * m.1) * k;
+    let uy = (sc.2 * m.0 - sc.0 * m.2) * k;
+    let vx = (tc.1 * m.0 - tc.0 * m.1) * k;
+    let vy = (tc.2 * m.0 - tc.0 * m.2) * k;
+    (u, v, (ux * ux + vx * vx).max(uy * uy + vy * vy))
+}
+
+#[cfg(test)]
+pub(crate) fn cube_lookup(s: f32, t: f32, r: f32) -> (usize, f32, f32) {
+    let (f, sc, tc, ma) = cube_face((s, 0.0, 0.0), (t, 0.0, 0.0), (r, 0.0, 0.0));
+    let (u, v, _) = cube_coords(sc, tc, ma, 1.0);
+    (f, u, v)
+}
+
+impl TexSpan {
 
     /// (s, t) at pixel `i` of the span.
     #[inline(always)]
@@ -198,7 +281,8 @@ impl<'a> SpanTex<'a> {
         let mut spans = [TexSpan::default(); TEXTURE_UNITS];
         if let Some(planes) = t.tex.as_deref() {
             for (n, (u, unit)) in stage.units.iter().enumerate() {
-                spans[n] = TexSpan::new(&planes[*u], px, py, unit.sampler.size());
+                let cube = unit.sampler.cube.is_some();
+                spans[n] = TexSpan::new(&planes[*u], px, py, unit.sampler.size(), cube);
             }
         }
         SpanTex {
@@ -260,6 +344,11 @@ impl<'a> SpanTex<'a> {
         let mut c = primary;
         let stage = self.stage;
         for (n, (_, unit)) in stage.units.iter().enumerate() {
+            if let Some(faces) = &unit.sampler.cube {
+                let texel = self.spans[n].cube(faces, i);
+                c = texenv::apply(&unit.env, unit.sampler.format, texel, c, primary);
+                continue;
+            }
             let (s, t) = self.spans[n].st(i);
             let lambda = self.lambda_at(n, i, s, t);
             let texel = unit.sampler.sample(s, t, lambda);
@@ -331,7 +420,8 @@ impl FragmentKey {
         {
             Route::General
         } else if let Some(stage) = &key.tex {
-            if stage.units.len() <= 1 {
+            // Cube maps run the general routine.
+            if stage.units.len() <= 1 && stage.units.iter().all(|(_, u)| u.sampler.cube.is_none()) {
                 Route::Textured {
                     filter: stage.filter(),
                     depth: key.depth.is_some(),

@@ -58,7 +58,10 @@
 //!
 //! MorphingMesh and SkinnedMesh are Meshes (`Object3D::downcast::<Mesh>` and `as_mesh()`
 //! work); they draw and pick a deformed copy of the vertex buffer, recomputed only when an
-//! input changed. The Loader is not here yet.
+//! input changed.
+//!
+//! [`Loader`] reads .m3g and PNG files ([`loader`]); [`writer`] saves any object graph as a
+//! .m3g file the Loader reads back.
 #![warn(missing_docs)]
 
 mod animation;

@@ -1,5 +1,5 @@
 //! A .m3g writer (beyond the specification): serializes an object graph to a valid file,
-//! uncompressed or zlib-compressed, that the [`Loader`](super::Loader) reads back.
+//! uncompressed or zlib-compressed, that the [`Loader`] reads back.
 //!
 //! Every object reachable from the given roots (through `getReferences`, plus node alignment
 //! references) is written once, leaf first, in one object section after the header section.
@@ -9,7 +9,7 @@
 //! - keyframes are written as Float32 (encoding 0), vertex arrays raw (encoding 0);
 //! - orientation is written as angle and axis, from the stored quaternion;
 //! - user parameters are written when the user object is a
-//!   [`UserParameters`](super::loader::UserParameters) map (as the Loader makes it);
+//!   [`UserParameters`] map (as the Loader makes it);
 //! - −0.0 and denormal floats are written as +0.0 (the format forbids them).
 //!
 //! A graph the format cannot hold is refused with a [`WriteError`]: a reference cycle (a node
