@@ -81,6 +81,20 @@ fn guard_distance(v: &ClipVertex, plane: usize) -> f32 {
     }
 }
 
+/// [`guard_distance`] in f64, for the frustum and guard planes (0 to 5) only.
+#[inline]
+fn guard_distance64(p: glam::DVec4, plane: usize) -> f64 {
+    let g = GUARD as f64;
+    match plane {
+        0 => g * p.w + p.x,
+        1 => g * p.w - p.x,
+        2 => g * p.w + p.y,
+        3 => g * p.w - p.y,
+        4 => p.w + p.z,
+        _ => p.w - p.z,
+    }
+}
+
 /// The planes that apply: the frustum's and the first `user` user planes.
 #[inline]
 fn plane_count(user: usize) -> usize {
@@ -188,7 +202,38 @@ pub fn triangle(
                     (q, p, dq, dp)
                 };
                 let t = di / (di - dout);
-                next[m] = inside.lerp(outside, t);
+                next[m] = if plane == 6 {
+                    // Issue 10 (tests/hard_cases.rs case 1): after the guard planes every
+                    // vertex outside the w plane lies at the clip-space origin (|x|, |y|,
+                    // |z| ≤ 8w ≈ 0), so t rounds to 1 and interpolating from the inside
+                    // vertex returns that origin, which w = W_MIN then projects to the
+                    // screen's center. From the outside vertex the tiny parameter keeps
+                    // the direction of the edge, as the limit w → 0⁺ does. Still one
+                    // deterministic choice per edge, so shared edges stay watertight.
+                    outside.lerp(inside, dout / (dout - di))
+                } else {
+                    inside.lerp(outside, t)
+                };
+                if plane < 6 {
+                    // Issue 10 (tests/hard_cases.rs case 4): with coordinates near 2³² an
+                    // f32 lerp between two vertices ~10⁸ apart in clip space is off by tens
+                    // of units, more than the whole guard band, and can cut away half the
+                    // screen. The position is therefore interpolated in f64 from f64
+                    // distances, then put exactly on the plane it was clipped against.
+                    let (ip, op) = (inside.pos.as_dvec4(), outside.pos.as_dvec4());
+                    let (di, dout) = (guard_distance64(ip, plane), guard_distance64(op, plane));
+                    let mut p = (ip + (op - ip) * (di / (di - dout))).as_vec4();
+                    let g = GUARD * p.w;
+                    match plane {
+                        0 => p.x = -g,
+                        1 => p.x = g,
+                        2 => p.y = -g,
+                        3 => p.y = g,
+                        4 => p.z = -p.w,
+                        _ => p.z = p.w,
+                    }
+                    next[m].pos = p;
+                }
                 if plane == 6 {
                     // Rounding can land the new vertex a hair below the plane; pin it on.
                     next[m].pos.w = next[m].pos.w.max(W_MIN);

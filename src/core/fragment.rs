@@ -228,7 +228,6 @@ pub(crate) fn cube_lookup(s: f32, t: f32, r: f32) -> (usize, f32, f32) {
 }
 
 impl TexSpan {
-
     /// (s, t) at pixel `i` of the span.
     #[inline(always)]
     fn st(&self, i: usize) -> (f32, f32) {

@@ -536,6 +536,43 @@ impl Texture {
         self.touch();
     }
 
+    /// [`Texture::write_region`] on level `level` of `face` (see [`Texture::chain`]),
+    /// regenerating that face's chain when its level 0 changes with `generate_mipmap` set.
+    #[allow(clippy::too_many_arguments)]
+    pub fn write_face_region(
+        &mut self,
+        face: u8,
+        level: usize,
+        x: u32,
+        y: u32,
+        w: u32,
+        h: u32,
+        texels: &[u32],
+    ) {
+        if face <= 1 {
+            return self.write_region(level, x, y, w, h, texels);
+        }
+        let generate = level == 0 && self.generate_mipmap;
+        let Some(c) = self.chain_mut(face) else {
+            return;
+        };
+        let Some(img) = c.get_mut(level).and_then(Option::as_mut) else {
+            return;
+        };
+        let img = Arc::make_mut(img);
+        for row in 0..h {
+            let dst = ((y + row) * img.width + x) as usize;
+            let src = (row * w) as usize;
+            for i in 0..w as usize {
+                img.texels[dst + i] = convert_word(img.format, texels[src + i]);
+            }
+        }
+        if generate {
+            generate_chain(c);
+        }
+        self.touch();
+    }
+
     /// Overwrites all of `level` with rendered `texels` (a framebuffer object's color
     /// buffer, RGBA8 words row 0 first), converted to the level's base format. Returns false
     /// (and changes nothing) when the level is missing or has another texel count. Rendering

@@ -100,6 +100,10 @@ pub struct Enables {
     pub scissor_test: bool,
     pub stencil_test: bool,
     pub texture_2d: [bool; MAX_TEXTURE_UNITS],
+    /// `OES_texture_cube_map`: `GL_TEXTURE_CUBE_MAP_OES` (takes precedence over
+    /// `GL_TEXTURE_2D`) and `GL_TEXTURE_GEN_STR_OES`, per unit.
+    pub texture_cube_map: [bool; MAX_TEXTURE_UNITS],
+    pub texture_gen_str: [bool; MAX_TEXTURE_UNITS],
 }
 
 impl Enables {
@@ -130,6 +134,8 @@ impl Enables {
             GL_SCISSOR_TEST => &mut self.scissor_test,
             GL_STENCIL_TEST => &mut self.stencil_test,
             GL_TEXTURE_2D => &mut self.texture_2d[unit],
+            GL_TEXTURE_CUBE_MAP_OES => &mut self.texture_cube_map[unit],
+            GL_TEXTURE_GEN_STR_OES => &mut self.texture_gen_str[unit],
             c if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as GLenum).contains(&c) => {
                 &mut self.clip_plane[(c - GL_CLIP_PLANE0) as usize]
             }

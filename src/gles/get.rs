@@ -131,6 +131,7 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_compressed_ETC1_RGB8_texture",
     "GL_EXT_texture_format_BGRA8888",
     "GL_OES_draw_texture",
+    "GL_OES_texture_cube_map",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.

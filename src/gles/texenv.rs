@@ -1,7 +1,7 @@
 //! Texture environments (ES 1.1 §3.7.12), one per texture unit, and the per-unit point
 //! sprite coordinate replacement (OES_point_sprite). Not part of any texture object.
 
-use crate::core::state::Quality;
+use crate::core::state::{Quality, TexGen};
 use crate::core::texenv as core_env;
 use crate::core::RenderState;
 
@@ -9,6 +9,7 @@ use super::context::{Context, MAX_TEXTURE_UNITS};
 use super::get::Value;
 use super::params::{clamp01, Params};
 use super::tokens::*;
+use super::tokens_ext::GL_NORMAL_MAP_OES;
 use super::types::*;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -292,8 +293,23 @@ impl Context {
     /// fog and the point sprite enable of `rs`.
     pub(super) fn texture_render_state(&self, rs: &mut RenderState) {
         for u in 0..MAX_TEXTURE_UNITS {
-            rs.textures[u] = if self.enables.texture_2d[u] {
-                self.unit_sampler(u).map(|sampler| core_env::TextureUnit {
+            // A cube map enabled on a unit takes precedence over its 2D texture.
+            let sampler = if self.enables.texture_cube_map[u] {
+                Some(self.unit_cube_sampler(u))
+            } else if self.enables.texture_2d[u] {
+                Some(self.unit_sampler(u))
+            } else {
+                None
+            };
+            rs.texgen[u] = self.enables.texture_gen_str[u].then(|| {
+                if self.textures.texgen_mode[u] == GL_NORMAL_MAP_OES {
+                    TexGen::NormalMap
+                } else {
+                    TexGen::ReflectionMap
+                }
+            });
+            rs.textures[u] = if let Some(sampler) = sampler {
+                sampler.map(|sampler| core_env::TextureUnit {
                     sampler,
                     env: self.texenv.units[u].to_core(),
                     coord_replace: self.texenv.units[u].coord_replace,

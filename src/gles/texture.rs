@@ -72,6 +72,37 @@ pub struct TextureUnits {
     /// The name bound to `GL_TEXTURE_CUBE_MAP_OES` on each unit, and the default cube map.
     pub bound_cube: [GLuint; MAX_TEXTURE_UNITS],
     pub default_cube: Texture,
+    /// `GL_TEXTURE_GEN_MODE_OES` of each unit: `GL_NORMAL_MAP_OES` or
+    /// `GL_REFLECTION_MAP_OES` (the initial value).
+    pub texgen_mode: [GLenum; MAX_TEXTURE_UNITS],
+}
+
+impl Context {
+    /// glTexGen / glGetTexGen (`OES_texture_cube_map`): `coord` must be
+    /// `GL_TEXTURE_GEN_STR_OES` and `pname` `GL_TEXTURE_GEN_MODE_OES`.
+    pub fn tex_gen(&mut self, coord: GLenum, pname: GLenum, param: f64) {
+        if coord != GL_TEXTURE_GEN_STR_OES || pname != GL_TEXTURE_GEN_MODE_OES {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let mode = if param.fract() == 0.0 && (0.0..=u32::MAX as f64).contains(&param) {
+            param as GLenum
+        } else {
+            GL_NONE_INVALID
+        };
+        if mode != GL_NORMAL_MAP_OES && mode != GL_REFLECTION_MAP_OES {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.textures.texgen_mode[self.active_texture] = mode;
+    }
+
+    /// The active unit's `GL_TEXTURE_GEN_MODE_OES`, or `None` (`GL_INVALID_ENUM` raised).
+    pub fn get_tex_gen(&mut self, coord: GLenum, pname: GLenum) -> Option<GLenum> {
+        if coord != GL_TEXTURE_GEN_STR_OES || pname != GL_TEXTURE_GEN_MODE_OES {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        Some(self.textures.texgen_mode[self.active_texture])
+    }
 }
 
 impl Default for TextureUnits {
@@ -81,6 +112,7 @@ impl Default for TextureUnits {
             default: Texture::new(),
             bound_cube: [0; MAX_TEXTURE_UNITS],
             default_cube: Texture::new_cube_map(),
+            texgen_mode: [GL_REFLECTION_MAP_OES; MAX_TEXTURE_UNITS],
         }
     }
 }
@@ -112,12 +144,35 @@ pub enum Compressed {
 /// client memory is laid out (`rect.len` bytes are read when pixels are given).
 #[derive(Clone, Copy, Debug)]
 pub struct TexUpload {
+    /// 0 for `GL_TEXTURE_2D`, 1 ..= 6 for the cube map faces.
+    pub face: u8,
     pub level: usize,
     pub x: u32,
     pub y: u32,
     pub format: BaseFormat,
     pub ty: PixelType,
     pub rect: PixelRect,
+}
+
+/// The image a `glTexImage2D`-style target names: 0 for `GL_TEXTURE_2D`, 1 ..= 6 for the
+/// cube map faces POSITIVE_X .. NEGATIVE_Z (`OES_texture_cube_map`).
+pub fn image_target(target: GLenum) -> Option<u8> {
+    match target {
+        GL_TEXTURE_2D => Some(0),
+        GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z_OES => {
+            Some((target - GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES + 1) as u8)
+        }
+        _ => None,
+    }
+}
+
+/// Whether a texture object target is the cube map one (`None`: neither it nor 2D).
+fn object_target(target: GLenum) -> Option<bool> {
+    match target {
+        GL_TEXTURE_2D => Some(false),
+        GL_TEXTURE_CUBE_MAP_OES => Some(true),
+        _ => None,
+    }
 }
 
 pub fn base_format(format: GLenum) -> Option<BaseFormat> {
@@ -253,6 +308,26 @@ impl Context {
         }
     }
 
+    /// A snapshot of the cube map bound to `unit` for sampling, `None` when it is not cube
+    /// complete.
+    pub(super) fn unit_cube_sampler(
+        &self,
+        unit: usize,
+    ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
+        let name = self.textures.bound_cube[unit];
+        if name == 0 {
+            self.textures.default_cube.sampler()
+        } else {
+            lock_objects(&self.shared).textures.get(name)?.sampler()
+        }
+    }
+
+    /// Runs `f` on the texture bound to the active unit's target for image `face` (0: 2D,
+    /// 1 ..= 6: the cube map).
+    fn with_face_texture<R>(&mut self, face: u8, f: impl FnOnce(&mut Texture) -> R) -> R {
+        self.with_target_texture(face != 0, f)
+    }
+
     /// Runs `f` on the texture bound to the active unit.
     pub fn with_bound_texture<R>(&mut self, f: impl FnOnce(&mut Texture) -> R) -> R {
         let name = self.textures.bound[self.active_texture];
@@ -328,14 +403,37 @@ impl Context {
         self.textures_deleted(names);
     }
 
+    /// `glBindTexture`: a name first bound to one target keeps that kind; binding it to
+    /// the other is `GL_INVALID_OPERATION`.
     pub fn bind_texture(&mut self, target: GLenum, name: GLuint) {
-        if target != GL_TEXTURE_2D {
+        let Some(cube) = object_target(target) else {
             return self.set_error(GL_INVALID_ENUM);
-        }
+        };
         if name != 0 {
-            lock_objects(&self.shared).textures.get_or_create(name);
+            let mut o = lock_objects(&self.shared);
+            let t = o
+                .textures
+                .objects
+                .entry(name)
+                .or_insert(None)
+                .get_or_insert_with(|| {
+                    if cube {
+                        Texture::new_cube_map()
+                    } else {
+                        Texture::new()
+                    }
+                });
+            if t.is_cube_map() != cube {
+                drop(o);
+                return self.set_error(GL_INVALID_OPERATION);
+            }
         }
-        self.textures.bound[self.active_texture] = name;
+        let unit = self.active_texture;
+        if cube {
+            self.textures.bound_cube[unit] = name;
+        } else {
+            self.textures.bound[unit] = name;
+        }
     }
 
     pub fn is_texture(&mut self, name: GLuint) -> bool {
@@ -352,9 +450,9 @@ impl Context {
         kind: ParamKind,
         vector: bool,
     ) {
-        if target != GL_TEXTURE_2D {
+        let Some(cube) = object_target(target) else {
             return self.set_error(GL_INVALID_ENUM);
-        }
+        };
         if pname == GL_TEXTURE_CROP_RECT_OES {
             if !vector || values.len() < 4 {
                 return self.set_error(GL_INVALID_ENUM);
@@ -367,7 +465,7 @@ impl Context {
                 v.round().clamp(i32::MIN as f64, i32::MAX as f64) as i32
             });
             self.texture_changing();
-            return self.with_bound_texture(|t| {
+            return self.with_target_texture(cube, |t| {
                 t.crop_rect = rect;
                 t.touch();
             });
@@ -422,7 +520,7 @@ impl Context {
             return self.set_error(GL_INVALID_ENUM);
         };
         self.texture_changing();
-        self.with_bound_texture(|t| {
+        self.with_target_texture(cube, |t| {
             match set {
                 Set::Min(f) => t.min_filter = f,
                 Set::Mag(f) => t.mag_filter = f,
@@ -442,11 +540,11 @@ impl Context {
         pname: GLenum,
         kind: ParamKind,
     ) -> Option<Vec<f64>> {
-        if target != GL_TEXTURE_2D {
+        let Some(cube) = object_target(target) else {
             self.set_error(GL_INVALID_ENUM);
             return None;
-        }
-        let v = self.with_bound_texture(|t| -> Option<Vec<f64>> {
+        };
+        let v = self.with_target_texture(cube, |t| -> Option<Vec<f64>> {
             let e = |v: GLenum| Some(vec![v as f64]);
             match pname {
                 GL_TEXTURE_MIN_FILTER => e(match t.min_filter {
@@ -506,10 +604,12 @@ impl Context {
         format: GLenum,
         ty: GLenum,
     ) -> Result<TexUpload, GLenum> {
-        if target != GL_TEXTURE_2D {
-            return Err(GL_INVALID_ENUM);
-        }
+        let face = image_target(target).ok_or(GL_INVALID_ENUM)?;
         let (f, t) = client_format(format, ty)?;
+        // Cube map faces are square.
+        if face != 0 && width != height {
+            return Err(GL_INVALID_VALUE);
+        }
         let internal = u32::try_from(internal_format).ok().and_then(|i| {
             if i == GL_BGRA_EXT {
                 Some(BaseFormat::Rgba)
@@ -529,6 +629,7 @@ impl Context {
         let rect = PixelRect::new(width as usize, height as usize, size, self.unpack_alignment)
             .ok_or(GL_OUT_OF_MEMORY)?;
         Ok(TexUpload {
+            face,
             level: level as usize,
             x: 0,
             y: 0,
@@ -552,7 +653,7 @@ impl Context {
             None => Image::blank(w, h, up.format),
         };
         self.texture_changing();
-        self.with_bound_texture(|t| t.set_level(up.level, image));
+        self.with_face_texture(up.face, |t| t.set_face_level(up.face, up.level, image));
     }
 
     /// Validates `glTexSubImage2D`'s arguments against the bound texture.
@@ -568,11 +669,9 @@ impl Context {
         format: GLenum,
         ty: GLenum,
     ) -> Result<TexUpload, GLenum> {
-        if target != GL_TEXTURE_2D {
-            return Err(GL_INVALID_ENUM);
-        }
+        let face = image_target(target).ok_or(GL_INVALID_ENUM)?;
         let (f, t) = client_format(format, ty)?;
-        let level_format = self.check_sub_region(level, x, y, width, height)?;
+        let level_format = self.check_sub_region(face, level, x, y, width, height)?;
         if level_format != f {
             return Err(GL_INVALID_OPERATION);
         }
@@ -580,6 +679,7 @@ impl Context {
         let rect = PixelRect::new(width as usize, height as usize, size, self.unpack_alignment)
             .ok_or(GL_OUT_OF_MEMORY)?;
         Ok(TexUpload {
+            face,
             level: level as usize,
             x: x as u32,
             y: y as u32,
@@ -594,6 +694,7 @@ impl Context {
     /// was never specified.
     fn check_sub_region(
         &mut self,
+        face: u8,
         level: i32,
         x: i32,
         y: i32,
@@ -603,8 +704,8 @@ impl Context {
         if !(0..=MAX_LEVEL as i32).contains(&level) || w < 0 || h < 0 || x < 0 || y < 0 {
             return Err(GL_INVALID_VALUE);
         }
-        let dims = self.with_bound_texture(|t| {
-            t.level(level as usize)
+        let dims = self.with_face_texture(face, |t| {
+            t.face_level(face, level as usize)
                 .map(|i| (i.width, i.height, i.format))
         });
         let Some((lw, lh, format)) = dims else {
@@ -623,11 +724,14 @@ impl Context {
             return;
         }
         self.texture_changing();
-        self.with_bound_texture(|t| t.write_region(up.level, up.x, up.y, w, h, &texels));
+        self.with_face_texture(up.face, |t| {
+            t.write_face_region(up.face, up.level, up.x, up.y, w, h, &texels)
+        });
     }
 
     /// Validates `glCompressedTexImage2D`: the data must be exactly `image_size` bytes.
-    /// Returns the format and the number of levels the blob holds.
+    /// Returns the format, the number of levels the blob holds and the image target's face
+    /// ([`image_target`]).
     #[allow(clippy::too_many_arguments)]
     pub fn compressed_tex_image_2d_check(
         &self,
@@ -638,9 +742,10 @@ impl Context {
         height: i32,
         border: i32,
         image_size: i32,
-    ) -> Result<(Compressed, usize), GLenum> {
-        if target != GL_TEXTURE_2D {
-            return Err(GL_INVALID_ENUM);
+    ) -> Result<(Compressed, usize, u8), GLenum> {
+        let face = image_target(target).ok_or(GL_INVALID_ENUM)?;
+        if face != 0 && width != height {
+            return Err(GL_INVALID_VALUE);
         }
         if internal_format == GL_ETC1_RGB8_OES {
             // One level per call; the size must be the blocks' (8 bytes per 4 × 4 block).
@@ -651,7 +756,7 @@ impl Context {
             if image_size as usize != size {
                 return Err(GL_INVALID_VALUE);
             }
-            return Ok((Compressed::Etc1, level as usize));
+            return Ok((Compressed::Etc1, level as usize, face));
         }
         let Some(f) = palette_format(internal_format) else {
             return Err(GL_INVALID_ENUM);
@@ -673,13 +778,14 @@ impl Context {
         if image_size as usize != f.image_size(width as u32, height as u32, levels) {
             return Err(GL_INVALID_VALUE);
         }
-        Ok((Compressed::Palette(f), levels))
+        Ok((Compressed::Palette(f), levels, face))
     }
 
     /// Specifies levels 0 .. `levels` from a paletted blob (`None`: contents zeroed).
     /// For ETC1, `levels` is the level number.
     pub fn compressed_tex_image_2d(
         &mut self,
+        face: u8,
         format: Compressed,
         levels: usize,
         width: i32,
@@ -694,7 +800,7 @@ impl Context {
                     .and_then(|d| crate::core::texture::decode_etc1(w, h, d))
                     .unwrap_or_else(|| Image::blank(w, h, BaseFormat::Rgb));
                 self.texture_changing();
-                return self.with_bound_texture(|t| t.set_level(levels, image));
+                return self.with_face_texture(face, |t| t.set_face_level(face, levels, image));
             }
         };
         let images = match data.and_then(|d| format.decode(w, h, levels, d)) {
@@ -712,13 +818,13 @@ impl Context {
         self.texture_changing();
         // With GENERATE_MIPMAP, a single-level blob gets its chain generated (set_level does
         // it for level 0); an explicit chain is kept as given.
-        self.with_bound_texture(|t| {
+        self.with_face_texture(face, |t| {
             let generate = t.generate_mipmap && images.len() > 1;
             if generate {
                 t.generate_mipmap = false;
             }
             for (l, img) in images.into_iter().enumerate() {
-                t.set_level(l, img);
+                t.set_face_level(face, l, img);
             }
             if generate {
                 t.generate_mipmap = true;
@@ -741,7 +847,7 @@ impl Context {
         format: GLenum,
         image_size: i32,
     ) {
-        if target != GL_TEXTURE_2D
+        if image_target(target).is_none()
             || (palette_format(format).is_none() && format != GL_ETC1_RGB8_OES)
         {
             return self.set_error(GL_INVALID_ENUM);
@@ -782,13 +888,14 @@ impl Context {
         height: i32,
         border: i32,
     ) {
-        if target != GL_TEXTURE_2D {
+        let Some(face) = image_target(target) else {
             return self.set_error(GL_INVALID_ENUM);
-        }
+        };
         let Some(format) = base_format(internal_format) else {
             return self.set_error(GL_INVALID_ENUM);
         };
-        if !valid_image_size(level, width, height) || border != 0 {
+        if !valid_image_size(level, width, height) || border != 0 || (face != 0 && width != height)
+        {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(color) = self.read_color_format() else {
@@ -813,7 +920,7 @@ impl Context {
             texels,
         };
         self.texture_changing();
-        self.with_bound_texture(|t| t.set_level(level as usize, image));
+        self.with_face_texture(face, |t| t.set_face_level(face, level as usize, image));
     }
 
     /// `glCopyTexSubImage2D`.
@@ -829,10 +936,10 @@ impl Context {
         width: i32,
         height: i32,
     ) {
-        if target != GL_TEXTURE_2D {
+        let Some(face) = image_target(target) else {
             return self.set_error(GL_INVALID_ENUM);
-        }
-        let format = match self.check_sub_region(level, xoffset, yoffset, width, height) {
+        };
+        let format = match self.check_sub_region(face, level, xoffset, yoffset, width, height) {
             Ok(f) => f,
             Err(e) => return self.set_error(e),
         };
@@ -855,8 +962,9 @@ impl Context {
             format,
         );
         self.texture_changing();
-        self.with_bound_texture(|t| {
-            t.write_region(
+        self.with_face_texture(face, |t| {
+            t.write_face_region(
+                face,
                 level as usize,
                 xoffset as u32,
                 yoffset as u32,
@@ -871,7 +979,12 @@ impl Context {
     pub(super) fn texture_value(&mut self, pname: GLenum) -> Option<Value> {
         Some(match pname {
             GL_TEXTURE_BINDING_2D => Value::int(self.textures.bound[self.active_texture] as i64),
-            GL_MAX_TEXTURE_SIZE => Value::int(MAX_TEXTURE_SIZE as i64),
+            GL_TEXTURE_BINDING_CUBE_MAP_OES => {
+                Value::int(self.textures.bound_cube[self.active_texture] as i64)
+            }
+            GL_MAX_TEXTURE_SIZE | GL_MAX_CUBE_MAP_TEXTURE_SIZE_OES => {
+                Value::int(MAX_TEXTURE_SIZE as i64)
+            }
             GL_NUM_COMPRESSED_TEXTURE_FORMATS => Value::int(COMPRESSED_FORMATS.len() as i64),
             GL_COMPRESSED_TEXTURE_FORMATS => Value::ints(&COMPRESSED_FORMATS.map(|f| f as i64)),
             _ => return None,

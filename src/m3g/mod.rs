@@ -1,6 +1,119 @@
 //! M3G 1.1 (JSR-184) in Rust: the scene graph and immediate-mode API, rendering through the
 //! crate's own rasterizer (`crate::core`), not through the `gl*` functions.
 //!
+//! # Examples
+//!
+//! A World with a camera, a light and a lit red square, rendered into a `core::Target`;
+//! then one pixel read back (a target's rows are bottom row first):
+//!
+//! ```
+//! use GLES_CM::core::{ColorFormat, DepthFormat, Target, TargetFormat};
+//! use GLES_CM::m3g::*;
+//!
+//! # fn main() -> Result<()> {
+//! // A square from (-1, -1) to (1, 1) at z = 0, facing +Z, as one triangle strip.
+//! let positions = VertexArray::new(4, 3, 2)?; // 4 vertices, 3 components, 16-bit
+//! positions.set_shorts(0, 4, &[-1, -1, 0, 1, -1, 0, -1, 1, 0, 1, 1, 0])?;
+//! let normals = VertexArray::new(4, 3, 1)?; // 8-bit normals, 127 = 1.0
+//! normals.set_bytes(0, 4, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127])?;
+//! let vertices = VertexBuffer::new();
+//! vertices.set_positions(Some(&positions), 1.0, None)?; // scale 1, no bias
+//! vertices.set_normals(Some(&normals))?;
+//! let strip = TriangleStripArray::new_implicit(0, &[4])?.as_index_buffer();
+//!
+//! let red = Material::new();
+//! red.set_color(Material::DIFFUSE, 0xFFFF0000u32 as i32)?;
+//! let look = Appearance::new();
+//! look.set_material(Some(&red));
+//!
+//! let world = World::new();
+//! world.add_child(&Mesh::new(&vertices, &strip, Some(&look)))?;
+//! let camera = Camera::new();
+//! camera.set_perspective(60.0, 1.0, 0.1, 100.0)?;
+//! camera.set_translation(0.0, 0.0, 3.0); // looking down -Z at the square
+//! world.add_child(&camera)?;
+//! world.set_active_camera(&camera);
+//! world.add_child(&Light::new())?; // directional, along -Z: full on the square
+//!
+//! let format = TargetFormat {
+//!     color: ColorFormat::Rgba8888,
+//!     depth: Some(DepthFormat::D16),
+//!     stencil_bits: 0,
+//! };
+//! let mut g3d = Graphics3D::new();
+//! g3d.bind_target(Target::new(64, 64, format), true, 0)?;
+//! g3d.render_world(&world)?; // clears (no Background: black), then draws
+//! let target = g3d.release_target().unwrap();
+//!
+//! assert_eq!(target.pixel(32, 32), [255, 0, 0, 255]); // the middle: lit red
+//! assert_eq!(target.pixel(0, 0)[..3], [0, 0, 0]); // a corner: the cleared background
+//! # Ok(())
+//! # }
+//! ```
+//!
+//! Animation: a keyframe sequence drives a property through an [`AnimationTrack`];
+//! `animate(time)` on any object applies every track reachable from it:
+//!
+//! ```
+//! use GLES_CM::m3g::*;
+//!
+//! # fn main() -> Result<()> {
+//! let moves = KeyframeSequence::new(2, 3, KeyframeSequence::LINEAR)?;
+//! moves.set_keyframe(0, 0, &[0.0, 0.0, 0.0])?; // at 0 ms
+//! moves.set_keyframe(1, 1000, &[4.0, 0.0, 0.0])?; // at 1000 ms
+//! moves.set_duration(1000)?;
+//! let track = AnimationTrack::new(&moves, AnimationTrack::TRANSLATION)?;
+//! track.set_controller(Some(&AnimationController::new()));
+//!
+//! let group = Group::new();
+//! group.add_animation_track(&track)?;
+//! let world = World::new();
+//! world.add_child(&group)?;
+//! world.animate(250)?;
+//! assert_eq!(group.get_translation(), [1.0, 0.0, 0.0]);
+//! # Ok(())
+//! # }
+//! ```
+//!
+//! Immediate mode into an [`Image2D`], whose pixels are read back top row first; and the
+//! same object graph saved with the [`writer`] and read back with the [`Loader`]:
+//!
+//! ```
+//! use GLES_CM::m3g::*;
+//!
+//! # fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
+//! let positions = VertexArray::new(3, 3, 1)?; // one triangle, 8-bit coordinates
+//! positions.set_bytes(0, 3, &[-1, -1, 0, 1, -1, 0, -1, 1, 0])?;
+//! let vertices = VertexBuffer::new();
+//! vertices.set_positions(Some(&positions), 1.0, None)?;
+//! vertices.set_default_color(0xFF00FF00u32 as i32); // unlit: the default color, green
+//! let triangle = TriangleStripArray::new_implicit(0, &[3])?.as_index_buffer();
+//!
+//! let camera = Camera::new();
+//! camera.set_parallel(2.0, 1.0, -1.0, 1.0)?; // x and y from -1 to 1
+//! let image = Image2D::new(Image2D::RGB, 8, 8)?;
+//! let mut g3d = Graphics3D::new();
+//! g3d.bind_image(&image, true, 0)?;
+//! g3d.clear(None)?;
+//! g3d.set_camera(Some(&camera), None)?;
+//! g3d.render_submesh(&vertices, &triangle, &Appearance::new(), None, -1)?;
+//! g3d.release_target(); // writes the frame into the image
+//!
+//! let rgb = |x: usize, y: usize| image.pixels()[(y * 8 + x) * 3..][..3].to_vec();
+//! assert_eq!(rgb(0, 7), [0, 255, 0]); // bottom left: inside the triangle
+//! assert_eq!(rgb(7, 0), [0, 0, 0]); // top right: outside
+//!
+//! let mesh = Mesh::new(&vertices, &triangle, Some(&Appearance::new()));
+//! mesh.set_user_id(7);
+//! let bytes = writer::save(&[mesh.as_object3d()], true)?; // zlib-compressed .m3g
+//! let roots = Loader::load(&bytes)?;
+//! let loaded = roots[0].downcast::<Mesh>().unwrap();
+//! assert_eq!(loaded.user_id(), 7);
+//! assert_eq!(loaded.vertex_buffer().default_color(), 0xFF00FF00u32 as i32);
+//! # Ok(())
+//! # }
+//! ```
+//!
 //! # Handles
 //!
 //! Every M3G object lives in one `Rc<RefCell<…>>` cell; the types here ([`Mesh`],
@@ -47,14 +160,13 @@
 //! | `Graphics3D.bindTarget(Image2D…)` / `(Graphics…)` | `bind_image` / `bind_target` (a `core::Target`) |
 //! | `Graphics3D.render(World)` / `(Node, T)` / `(vb, ib, app, T[, scope])` | `render_world` / `render_node` / `render_submesh` |
 //! | `RayIntersection.getTextureS/T` | `texture_s` / `texture_t` |
-//!
-//! Each class's own table is on its type ([`Object3DExt`], [`TransformableExt`],
-//! [`NodeExt`], [`GroupExt`], [`Graphics3D`]).
-//!
 //! | `KeyframeSequence.getKeyframe(i, float[])` | `get_keyframe(i) -> (time, values)` |
 //! | `MorphingMesh(base, targets, ib, app)` / `(…, ib[], app[])` | `new` / `with_submeshes` |
 //! | `SkinnedMesh(vb, ib, app, skeleton)` / `(vb, ib[], app[], skeleton)` | `new` / `with_submeshes` |
 //! | `SkinnedMesh.getBoneVertices(bone, int[], float[])` | `get_bone_vertices(bone) -> (indices, weights)` |
+//!
+//! Each class's own table is on its type ([`Object3DExt`], [`TransformableExt`],
+//! [`NodeExt`], [`GroupExt`], [`Graphics3D`]).
 //!
 //! MorphingMesh and SkinnedMesh are Meshes (`Object3D::downcast::<Mesh>` and `as_mesh()`
 //! work); they draw and pick a deformed copy of the vertex buffer, recomputed only when an

@@ -10,7 +10,7 @@
 
 use glam::DVec4;
 
-use super::state::{CullFace, RenderState, ShadeModel, Winding};
+use super::state::{CullFace, RenderState, ShadeModel, TexGen, Winding};
 use super::target::Target;
 use super::vertex::{DrawCall, Primitive};
 use super::TEXTURE_UNITS;
@@ -102,8 +102,28 @@ pub fn render(state: &RenderState, draw: &DrawCall<'_>, target: &mut Target) {
             color: DVec4::from_array(draw.color.fetch(i).map(f64::from))
                 .clamp(DVec4::ZERO, DVec4::ONE),
             tex: std::array::from_fn(|u| {
-                state.texture_matrices[u].as_dmat4()
-                    * DVec4::from_array(draw.texcoord[u].fetch(i).map(f64::from))
+                let tc = match state.texgen[u] {
+                    None => DVec4::from_array(draw.texcoord[u].fetch(i).map(f64::from)),
+                    Some(g) => {
+                        // The eye-space normal: the inverse transpose of the modelview.
+                        let [nx, ny, nz, _] = draw.normal.fetch(i).map(f64::from);
+                        let n = glam::DVec3::new(nx, ny, nz);
+                        let m = glam::DMat3::from_mat4(mv).inverse().transpose();
+                        let mut n = m * n;
+                        if state.normalize || state.rescale_normal {
+                            n = n.normalize_or_zero();
+                        }
+                        match g {
+                            TexGen::NormalMap => n.extend(1.0),
+                            TexGen::ReflectionMap => {
+                                let e = (mv * p).truncate().normalize_or_zero();
+                                let n = n.normalize_or_zero();
+                                (e - 2.0 * n * n.dot(e)).extend(1.0)
+                            }
+                        }
+                    }
+                };
+                state.texture_matrices[u].as_dmat4() * tc
             }),
             eye_z: (mv * p).z,
         }
@@ -291,7 +311,18 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
                 let (b0, bx, by) = (bary(px, py), bary(px + 1.0, py), bary(px, py + 1.0));
                 let coords: Vec<Option<texturing::Coords>> = (0..TEXTURE_UNITS)
                     .map(|u| {
-                        state.textures[u].as_ref()?;
+                        let unit = state.textures[u].as_ref()?;
+                        if unit.sampler.cube.is_some() {
+                            // The direction's components, each times 1/w (q is ignored).
+                            let dir = |b: &[f64; 3]| {
+                                [
+                                    lin(b, &|i| v[i].tex[u].x),
+                                    lin(b, &|i| v[i].tex[u].y),
+                                    lin(b, &|i| v[i].tex[u].z),
+                                ]
+                            };
+                            return Some(texturing::cube_coords(dir(&b0), dir(&bx), dir(&by)));
+                        }
                         let ratio = |b: &[f64; 3]| {
                             let q = lin(b, &|i| v[i].tex[u].w);
                             (
@@ -323,6 +354,7 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
                             dt_dx,
                             ds_dy,
                             dt_dy,
+                            face: None,
                         })
                     })
                     .collect();

@@ -21,6 +21,58 @@ pub struct Coords {
     pub dt_dx: f64,
     pub ds_dy: f64,
     pub dt_dy: f64,
+    /// For a cube map, the face (0 ..= 5: POSITIVE_X .. NEGATIVE_Z) the coordinates are in.
+    pub face: Option<usize>,
+}
+
+/// Cube map coordinates (`OES_texture_cube_map`) from the direction (s, t, r) at the
+/// pixel and at its right and upper neighbours, each given as values linear in window
+/// space (any common factor such as 1/w or q cancels): the face from the table (the largest
+/// magnitude, ties to x then y), ((sc/|ma| + 1)/2, (tc/|ma| + 1)/2) and their exact
+/// derivatives by the quotient rule, in the pixel's face.
+pub fn cube_coords(d0: [f64; 3], dx: [f64; 3], dy: [f64; 3]) -> Coords {
+    let [x, y, z] = d0;
+    let (ax, ay, az) = (x.abs(), y.abs(), z.abs());
+    // (face, sc, tc, ma) as (component index, sign) pairs.
+    let (face, sc, tc, ma) = if ax >= ay && ax >= az {
+        if x >= 0.0 {
+            (0, (2, -1.0), (1, -1.0), 0)
+        } else {
+            (1, (2, 1.0), (1, -1.0), 0)
+        }
+    } else if ay >= az {
+        if y >= 0.0 {
+            (2, (0, 1.0), (2, 1.0), 1)
+        } else {
+            (3, (0, 1.0), (2, -1.0), 1)
+        }
+    } else if z >= 0.0 {
+        (4, (0, 1.0), (1, -1.0), 2)
+    } else {
+        (5, (0, -1.0), (1, -1.0), 2)
+    };
+    let sign = d0[ma].signum();
+    let at = |d: &[f64; 3], (i, k): (usize, f64)| d[i] * k;
+    let coord = |c: (usize, f64)| {
+        let (n0, m0) = (at(&d0, c), d0[ma] * sign);
+        let v = 0.5 * (n0 / m0 + 1.0);
+        let der = |d: &[f64; 3]| {
+            let (dn, dm) = (at(d, c) - n0, d[ma] * sign - m0);
+            0.5 * (dn * m0 - n0 * dm) / (m0 * m0)
+        };
+        (v, der(&dx), der(&dy))
+    };
+    let (s, ds_dx, ds_dy) = coord(sc);
+    let (t, dt_dx, dt_dy) = coord(tc);
+    Coords {
+        s,
+        t,
+        ds_dx,
+        dt_dx,
+        ds_dy,
+        dt_dy,
+        face: Some(face),
+    }
 }
 
 /// The wrapped coordinate in [0, 1] (spec formulas, before the texel lookup).
@@ -250,7 +302,10 @@ pub fn shade(state: &RenderState, primary: DVec4, coords: &[Option<Coords>], z_e
         let (Some(unit), Some(Some(co))) = (unit, coords.get(u)) else {
             continue;
         };
-        let cs = sample(&unit.sampler, co);
+        let cs = match (co.face, &unit.sampler.cube) {
+            (Some(f), Some(faces)) => sample(&faces[f], co),
+            _ => sample(&unit.sampler, co),
+        };
         c = env(&unit.env, unit.sampler.format, cs, c, primary);
     }
     if let Some(fog) = &state.fog {

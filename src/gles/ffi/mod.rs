@@ -25,6 +25,7 @@ mod per_fragment;
 mod points_lines;
 mod state;
 mod texenv;
+mod texgen;
 mod texture;
 
 pub use arrays::*;
@@ -43,6 +44,7 @@ pub use per_fragment::*;
 pub use points_lines::*;
 pub use state::*;
 pub use texenv::*;
+pub use texgen::*;
 pub use texture::*;
 
 /// Runs `f` on the calling thread's current context. Without one the call does nothing and

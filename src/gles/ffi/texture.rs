@@ -238,7 +238,7 @@ pub unsafe extern "C" fn glCompressedTexImage2D(
     data: *const GLvoid,
 ) {
     with_context((), |c| {
-        let (format, levels) = match c.compressed_tex_image_2d_check(
+        let (format, levels, face) = match c.compressed_tex_image_2d_check(
             target,
             level,
             internalformat,
@@ -253,7 +253,7 @@ pub unsafe extern "C" fn glCompressedTexImage2D(
         // SAFETY: the application provides `image_size` bytes at a non-null `data`.
         let bytes =
             (!data.is_null()).then(|| unsafe { client_bytes(data as usize, image_size as usize) });
-        c.compressed_tex_image_2d(format, levels, width, height, bytes)
+        c.compressed_tex_image_2d(face, format, levels, width, height, bytes)
     })
 }
 
