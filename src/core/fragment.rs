@@ -968,6 +968,25 @@ mod tests {
     }
 
     #[test]
+    fn cube_faces_follow_the_extension_table() {
+        // (direction) -> (face, s, t): sc/|ma| and tc/|ma| of 0.5 map to 0.75.
+        let cases = [
+            ((1.0, -0.5, -0.5), (0, 0.75, 0.75)),
+            ((-1.0, -0.5, 0.5), (1, 0.75, 0.75)),
+            ((0.5, 1.0, 0.5), (2, 0.75, 0.75)),
+            ((0.5, -1.0, -0.5), (3, 0.75, 0.75)),
+            ((0.5, -0.5, 1.0), (4, 0.75, 0.75)),
+            ((-0.5, -0.5, -1.0), (5, 0.75, 0.75)),
+            // Ties go to x, then y.
+            ((1.0, 1.0, 1.0), (0, 0.0, 0.0)),
+            ((0.0, -1.0, 1.0), (3, 0.5, 0.0)),
+        ];
+        for ((s, t, r), want) in cases {
+            assert_eq!(cube_lookup(s, t, r), want, "({s}, {t}, {r})");
+        }
+    }
+
+    #[test]
     fn saturate_blends_by_the_smaller_of_source_alpha_and_free_destination() {
         let b = Blend::func(BlendFactor::SrcAlphaSaturate, BlendFactor::One);
         let out = blend(&b, [1.0, 1.0, 1.0, 0.75], [0.0, 0.0, 0.0, 0.5]);
