@@ -474,6 +474,8 @@ fn texture_surface(dpy: usize, s: usize, buffer: EGLint) -> EglResult<Arc<Surfac
     if surf.attribs.texture_format == EGL_NO_TEXTURE {
         return Err(EGL_BAD_MATCH);
     }
+    // Only the back buffer can be bound. The EGL 1.4 specification (§3.6.1) names
+    // EGL_BAD_PARAMETER here; the reference pages say EGL_BAD_MATCH. The specification rules.
     if buffer != EGL_BACK_BUFFER {
         return Err(EGL_BAD_PARAMETER);
     }
