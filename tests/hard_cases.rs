@@ -1,0 +1,1401 @@
+//! The numerical hard cases of `../shared/reference/gles-checklist.md` §4 (1–30), one test
+//! each, named after the case, and the M3G hard cases of `m3g-checklist.md` §5 that
+//! `tests/m3g_*.rs` do not already cover (the `m3g_` tests at the end). Each asserts the
+//! behavior the specification prescribes or, where it leaves room, the one we document, and
+//! that no NaN, infinity or garbage pixel appears: every pixel is either the clear color or
+//! a color the draw can produce.
+//!
+//! Cases that need the GL state machine (matrix stacks, queries, textures, EGL) drive the C
+//! API of the library linked into this test; the rest drive the core (`RenderState` +
+//! `DrawCall`) directly, often against the f64 reference renderer.
+
+use std::ffi::c_void;
+use std::ptr::{null, null_mut};
+
+use glam::{Mat4, Vec3, Vec4};
+use GLES_CM::core::reference;
+use GLES_CM::core::state::{
+    Blend, BlendFactor, Light, Lighting, LogicOp, Material, PolygonOffset, StencilOp, StencilTest,
+};
+use GLES_CM::core::texenv::{Fog, FogMode};
+use GLES_CM::core::{
+    self, clip, AttribArray, AttribSource, ColorFormat, CompareFunc, ComponentType, DepthFormat,
+    DrawCall, Indices, Primitive, RenderState, Target, TargetFormat,
+};
+use GLES_CM::egl::ffi::*;
+use GLES_CM::egl::tokens::*;
+use GLES_CM::egl::types::*;
+use GLES_CM::gles::tokens::*;
+
+// ---------------------------------------------------------------------------------------
+// Core helpers.
+
+fn fmt(color: ColorFormat, depth: Option<DepthFormat>, stencil_bits: u32) -> TargetFormat {
+    TargetFormat {
+        color,
+        depth,
+        stencil_bits,
+    }
+}
+
+fn target(w: u32, h: u32) -> Target {
+    let mut t = Target::new(w, h, fmt(ColorFormat::Rgba8888, Some(DepthFormat::D24), 8));
+    t.clear_depth(t.bounds(), 1.0);
+    t
+}
+
+/// A state whose projection maps object x, y straight to window pixels, z in [−1, 1].
+fn pixel_state(w: i32, h: i32) -> RenderState {
+    let mut s = RenderState::new(w, h);
+    s.projection = Mat4::orthographic_rh_gl(0.0, w as f32, 0.0, h as f32, -1.0, 1.0);
+    s
+}
+
+fn bytes<T: Copy>(v: &[T]) -> Vec<u8> {
+    let n = std::mem::size_of_val(v);
+    // SAFETY: any initialized plain-data slice may be viewed as bytes.
+    unsafe { std::slice::from_raw_parts(v.as_ptr().cast::<u8>(), n).to_vec() }
+}
+
+fn array(data: &[u8], ty: ComponentType, size: usize) -> AttribArray<'_> {
+    AttribArray {
+        data,
+        ty,
+        size,
+        stride: size * ty.size(),
+        normalized: false,
+    }
+}
+
+/// A draw of float positions (`size` per vertex) with per-vertex RGBA colors, or white.
+fn call<'a>(prim: Primitive, pos: &'a [u8], size: usize, col: Option<&'a [u8]>) -> DrawCall<'a> {
+    let count = pos.len() / (4 * size);
+    let mut c = DrawCall::new(
+        prim,
+        Indices::Range { first: 0, count },
+        array(pos, ComponentType::Float, size),
+    );
+    if let Some(col) = col {
+        c.color = AttribSource::Array(array(col, ComponentType::Float, 4));
+    }
+    c
+}
+
+fn draw(s: &RenderState, t: &mut Target, prim: Primitive, pos: &[f32], size: usize, col: &[f32]) {
+    let (p, c) = (bytes(pos), bytes(col));
+    let d = call(prim, &p, size, (!col.is_empty()).then_some(&c[..]));
+    core::render(s, &d, t).unwrap();
+}
+
+/// The same draw through the reference renderer.
+fn draw_ref(
+    s: &RenderState,
+    t: &mut Target,
+    prim: Primitive,
+    pos: &[f32],
+    size: usize,
+    col: &[f32],
+) {
+    let (p, c) = (bytes(pos), bytes(col));
+    let d = call(prim, &p, size, (!col.is_empty()).then_some(&c[..]));
+    reference::render(s, &d, t);
+}
+
+/// Fast and reference images of one draw on fresh targets.
+fn both(
+    s: &RenderState,
+    w: u32,
+    h: u32,
+    prim: Primitive,
+    pos: &[f32],
+    size: usize,
+    col: &[f32],
+) -> (Target, Target) {
+    let (mut a, mut b) = (target(w, h), target(w, h));
+    draw(s, &mut a, prim, pos, size, col);
+    draw_ref(s, &mut b, prim, pos, size, col);
+    (a, b)
+}
+
+fn count(t: &Target, f: impl Fn([u8; 4]) -> bool) -> usize {
+    t.color().iter().filter(|w| f(w.to_le_bytes())).count()
+}
+
+fn covered(t: &Target) -> usize {
+    count(t, |p| p != [0, 0, 0, 0])
+}
+
+/// Every pixel is the clear color (0) or has each channel within [lo − 1, hi + 1] of the
+/// colors the draw can produce: no garbage.
+fn assert_clean(t: &Target, lo: [u8; 4], hi: [u8; 4]) {
+    for (i, w) in t.color().iter().enumerate() {
+        let p = w.to_le_bytes();
+        if p == [0; 4] {
+            continue;
+        }
+        for c in 0..4 {
+            assert!(
+                p[c].saturating_add(1) >= lo[c] && p[c] <= hi[c].saturating_add(1),
+                "garbage pixel {p:?} at {} (allowed {lo:?}..{hi:?})",
+                i
+            );
+        }
+    }
+}
+
+/// The vertex stage's output for a draw: every value finite.
+fn assert_vertices_finite(s: &RenderState, d: &DrawCall<'_>) -> Vec<core::vertex::ClipVertex> {
+    let v = core::vertex::run(s, d).unwrap();
+    let (lo, hi) = d.indices.range().unwrap();
+    let out: Vec<_> = (lo..=hi).map(|i| v[i]).collect();
+    for v in &out {
+        assert!(v.color.is_finite() && v.back_color.is_finite(), "{v:?}");
+        assert!(v.tex.iter().all(|t| t.is_finite()), "{v:?}");
+    }
+    out
+}
+
+/// The two images' coverage as text (`#` both, `f` fast only, `r` reference only).
+fn picture(a: &Target, b: &Target) -> String {
+    let mut s = String::from("\n");
+    for y in (0..a.height()).rev() {
+        for x in 0..a.width() {
+            let (p, q) = (a.pixel(x, y) != [0; 4], b.pixel(x, y) != [0; 4]);
+            s.push(match (p, q) {
+                (true, true) => '#',
+                (true, false) => 'f',
+                (false, true) => 'r',
+                _ => '.',
+            });
+        }
+        s.push('\n');
+    }
+    s
+}
+
+fn rgba(c: [f32; 4], n: usize) -> Vec<f32> {
+    (0..n).flat_map(|_| c).collect()
+}
+
+// ---------------------------------------------------------------------------------------
+// GL helpers: a pbuffer context through the library's own C entry points.
+
+#[allow(non_snake_case, dead_code)]
+extern "C" {
+    fn glGetError() -> u32;
+    fn glViewport(x: i32, y: i32, w: i32, h: i32);
+    fn glMatrixMode(m: u32);
+    fn glLoadIdentity();
+    fn glLoadMatrixf(m: *const f32);
+    fn glOrthof(l: f32, r: f32, b: f32, t: f32, n: f32, f: f32);
+    fn glScalef(x: f32, y: f32, z: f32);
+    fn glTranslatef(x: f32, y: f32, z: f32);
+    fn glClipPlanef(p: u32, eq: *const f32);
+    fn glGetClipPlanef(p: u32, eq: *mut f32);
+    fn glEnable(cap: u32);
+    fn glDisable(cap: u32);
+    fn glClearColor(r: f32, g: f32, b: f32, a: f32);
+    fn glClear(mask: u32);
+    fn glColor4f(r: f32, g: f32, b: f32, a: f32);
+    fn glNormal3f(x: f32, y: f32, z: f32);
+    fn glEnableClientState(a: u32);
+    fn glDisableClientState(a: u32);
+    fn glVertexPointer(size: i32, ty: u32, stride: i32, p: *const c_void);
+    fn glTexCoordPointer(size: i32, ty: u32, stride: i32, p: *const c_void);
+    fn glDrawArrays(mode: u32, first: i32, count: i32);
+    fn glDrawElements(mode: u32, count: i32, ty: u32, p: *const c_void);
+    fn glReadPixels(x: i32, y: i32, w: i32, h: i32, f: u32, ty: u32, p: *mut c_void);
+    fn glPixelStorei(p: u32, v: i32);
+    fn glGetIntegerv(p: u32, v: *mut i32);
+    fn glGetFloatv(p: u32, v: *mut f32);
+    fn glGetFixedv(p: u32, v: *mut i32);
+    fn glLightfv(l: u32, p: u32, v: *const f32);
+    fn glMaterialf(f: u32, p: u32, v: f32);
+    fn glQueryMatrixxOES(m: *mut i32, e: *mut i32) -> u32;
+    fn glPointSize(s: f32);
+    fn glPointParameterf(p: u32, v: f32);
+    fn glPointParameterfv(p: u32, v: *const f32);
+    fn glTexEnvi(t: u32, p: u32, v: i32);
+    fn glGenTextures(n: i32, t: *mut u32);
+    fn glBindTexture(t: u32, n: u32);
+    fn glTexParameteri(t: u32, p: u32, v: i32);
+    fn glTexImage2D(
+        t: u32,
+        l: i32,
+        i: i32,
+        w: i32,
+        h: i32,
+        b: i32,
+        f: u32,
+        ty: u32,
+        p: *const c_void,
+    );
+    fn glCompressedTexImage2D(
+        t: u32,
+        l: i32,
+        f: u32,
+        w: i32,
+        h: i32,
+        b: i32,
+        n: i32,
+        p: *const c_void,
+    );
+    fn glGenBuffers(n: i32, b: *mut u32);
+    fn glBindBuffer(t: u32, b: u32);
+    fn glBufferData(t: u32, n: isize, p: *const c_void, u: u32);
+    fn glFinish();
+}
+
+/// A pbuffer surface and a current ES 1.x context on this thread; released on drop.
+struct Gl {
+    dpy: EGLDisplay,
+    surface: EGLSurface,
+    context: EGLContext,
+    w: i32,
+    h: i32,
+}
+
+fn config(dpy: EGLDisplay, red: i32, depth: i32, stencil: i32) -> EGLConfig {
+    let attribs = [
+        EGL_SURFACE_TYPE,
+        EGL_PBUFFER_BIT,
+        EGL_RENDERABLE_TYPE,
+        EGL_OPENGL_ES_BIT,
+        EGL_RED_SIZE,
+        red,
+        EGL_DEPTH_SIZE,
+        depth,
+        EGL_STENCIL_SIZE,
+        stencil,
+        EGL_NONE,
+    ];
+    let mut configs = [null_mut(); 64];
+    let mut n = 0;
+    // SAFETY: the attribute list ends in EGL_NONE; `configs` holds 64 entries.
+    unsafe {
+        assert_eq!(
+            eglChooseConfig(dpy, attribs.as_ptr(), configs.as_mut_ptr(), 64, &mut n),
+            1
+        );
+        let attr = |c: EGLConfig, a: EGLint| {
+            let mut v = -1;
+            eglGetConfigAttrib(dpy, c, a, &mut v);
+            v
+        };
+        configs[..n as usize]
+            .iter()
+            .copied()
+            .find(|&c| {
+                attr(c, EGL_RED_SIZE) == red
+                    && attr(c, EGL_DEPTH_SIZE) == depth
+                    && attr(c, EGL_STENCIL_SIZE) == stencil
+                    && (red == 5 || attr(c, EGL_ALPHA_SIZE) == 8)
+            })
+            .expect("config")
+    }
+}
+
+impl Gl {
+    /// RGBA8888 (or RGB565 with `red == 5`) with the given depth and stencil bits.
+    fn new(w: i32, h: i32, red: i32, depth: i32, stencil: i32) -> Gl {
+        // SAFETY: handles come from this display; attribute lists end in EGL_NONE.
+        unsafe {
+            let dpy = eglGetDisplay(null_mut());
+            assert_eq!(eglInitialize(dpy, null_mut(), null_mut()), 1);
+            let cfg = config(dpy, red, depth, stencil);
+            let pb = [EGL_WIDTH, w, EGL_HEIGHT, h, EGL_NONE];
+            let surface = eglCreatePbufferSurface(dpy, cfg, pb.as_ptr());
+            let context = eglCreateContext(dpy, cfg, null_mut(), null());
+            assert!(!surface.is_null() && !context.is_null());
+            assert_eq!(eglMakeCurrent(dpy, surface, surface, context), 1);
+            Gl {
+                dpy,
+                surface,
+                context,
+                w,
+                h,
+            }
+        }
+    }
+
+    fn rgba8(w: i32, h: i32) -> Gl {
+        Gl::new(w, h, 8, 24, 8)
+    }
+
+    /// The color buffer as RGBA bytes, row 0 at the bottom.
+    fn read(&self) -> Vec<[u8; 4]> {
+        let mut px = vec![[0u8; 4]; (self.w * self.h) as usize];
+        // SAFETY: `px` holds w × h RGBA8 pixels with alignment 4.
+        unsafe {
+            glPixelStorei(GL_PACK_ALIGNMENT, 4);
+            glReadPixels(
+                0,
+                0,
+                self.w,
+                self.h,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                px.as_mut_ptr().cast(),
+            );
+        }
+        assert_eq!(err(), GL_NO_ERROR);
+        px
+    }
+
+    /// Pixel-aligned orthographic projection, identity modelview, cleared to black.
+    fn pixel_ortho(&self) {
+        // SAFETY: a context is current.
+        unsafe {
+            glMatrixMode(GL_PROJECTION);
+            glLoadIdentity();
+            glOrthof(0.0, self.w as f32, 0.0, self.h as f32, -1.0, 1.0);
+            glMatrixMode(GL_MODELVIEW);
+            glLoadIdentity();
+            glClearColor(0.0, 0.0, 0.0, 0.0);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        }
+    }
+}
+
+impl Drop for Gl {
+    fn drop(&mut self) {
+        // The handles were created on this display and are released once.
+        eglMakeCurrent(self.dpy, null_mut(), null_mut(), null_mut());
+        eglDestroyContext(self.dpy, self.context);
+        eglDestroySurface(self.dpy, self.surface);
+    }
+}
+
+fn err() -> u32 {
+    // SAFETY: no preconditions beyond a current context (none: GL_NO_ERROR... never UB).
+    unsafe { glGetError() }
+}
+
+/// Draws float xyz triangles (or `mode`) from client memory.
+fn gl_draw(mode: u32, xyz: &[f32]) {
+    // SAFETY: `xyz` outlives the draw, which reads `len / 3` vertices of 3 floats.
+    unsafe {
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glVertexPointer(3, GL_FLOAT, 0, xyz.as_ptr().cast());
+        glDrawArrays(mode, 0, (xyz.len() / 3) as i32);
+    }
+}
+
+fn gl_covered(px: &[[u8; 4]]) -> usize {
+    px.iter().filter(|p| p[..3] != [0, 0, 0]).count()
+}
+
+// ---------------------------------------------------------------------------------------
+// Geometry, clipping and depth.
+
+/// A perspective state for a `w` × `h` target: 60° field of view, near 0.5, far 50.
+fn perspective(w: i32, h: i32) -> RenderState {
+    let mut s = RenderState::new(w, h);
+    s.projection = Mat4::perspective_rh_gl(1.0, w as f32 / h as f32, 0.5, 50.0);
+    s
+}
+
+#[test]
+fn case_01_w_negative_vertices_are_clipped_before_the_divide() {
+    let s = perspective(64, 48);
+    // One vertex behind the eye (eye z > 0), two in front: a wedge reaching the screen's edge.
+    let pos = [-1.0, -0.5, -2.0, 1.0, -0.5, -2.0, 0.0, 0.3, 3.0];
+    let col = [1., 0., 0., 1., 0., 1., 0., 1., 0., 0., 1., 1.];
+    let (fast, slow) = both(&s, 64, 48, Primitive::Triangles, &pos, 3, &col);
+    let e = reference::compare(&fast, &slow);
+    assert!(e.max <= 2 && e.over_one < 0.01, "{e:?}");
+    assert!(covered(&fast) > 100);
+    assert_clean(&fast, [0, 0, 0, 255], [255, 255, 255, 255]);
+    // Every vertex behind the eye: nothing, even though x/w, y/w would land on screen.
+    let behind = [-1.0, -0.5, 2.0, 1.0, -0.5, 2.0, 0.0, 0.3, 3.0];
+    let (fast, _) = both(&s, 64, 48, Primitive::Triangles, &behind, 3, &col);
+    assert_eq!(covered(&fast), 0);
+    // Clip-space vertices with w < 0 given directly (xyzw), some with w = 0.
+    let mut id = RenderState::new(64, 48);
+    id.projection = Mat4::IDENTITY;
+    let xyzw = [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 0.0, -1.0, -1.0, 1.0, 0.5, 1.0];
+    let (fast, slow) = both(&id, 64, 48, Primitive::Triangles, &xyzw, 4, &col);
+    assert_eq!(covered(&fast), covered(&slow), "{}", picture(&fast, &slow));
+    assert_clean(&fast, [0, 0, 0, 255], [255, 255, 255, 255]);
+    // Reversed depth (M3G allows parallel projections with far < near, and negative ones):
+    // an orthographic projection with near 5, far −5 inverts the depth order.
+    let mut rev = RenderState::new(16, 16);
+    rev.projection = Mat4::orthographic_rh_gl(-1.0, 1.0, -1.0, 1.0, 5.0, -5.0);
+    rev.depth_test = Some(CompareFunc::Less);
+    let quad = |z: f32| {
+        [
+            -1.0, -1.0, z, 1.0, -1.0, z, 1.0, 1.0, z, -1.0, -1.0, z, 1.0, 1.0, z, -1.0, 1.0, z,
+        ]
+    };
+    let mut t = target(16, 16);
+    draw(
+        &rev,
+        &mut t,
+        Primitive::Triangles,
+        &quad(-2.0),
+        3,
+        &rgba([1., 0., 0., 1.], 6),
+    );
+    draw(
+        &rev,
+        &mut t,
+        Primitive::Triangles,
+        &quad(2.0),
+        3,
+        &rgba([0., 1., 0., 1.], 6),
+    );
+    // Eye z = 2 is behind z = −2 for this camera (it looks down +z): red stays.
+    assert_eq!(count(&t, |p| p == [255, 0, 0, 255]), 256);
+}
+
+#[test]
+fn case_02_near_plane_crossing_screen_covering_triangle() {
+    use GLES_CM::core::vertex::ClipVertex;
+    let v = |x: f32, y: f32, z: f32, w: f32| ClipVertex::new(Vec4::new(x, y, z, w), Vec4::ONE);
+    // Crosses the near plane (z = −w) and leaves the band on two sides.
+    let (a, b, c) = (
+        v(-30.0, -30.0, -3.0, 1.0),
+        v(30.0, -30.0, 2.0, 1.0),
+        v(0.0, 40.0, 0.5, 1.0),
+    );
+    let mut n = 0;
+    clip::triangle(&a, &b, &c, 0, |p| {
+        n = p.len();
+        for q in p {
+            let w = q.pos.w;
+            assert!(w >= clip::W_MIN);
+            assert!(q.pos.z >= -w * 1.0001 && q.pos.z <= w * 1.0001, "{q:?}");
+            assert!(q.pos.x.abs() <= clip::GUARD * w * 1.0001, "{q:?}");
+            assert!(q.pos.y.abs() <= clip::GUARD * w * 1.0001, "{q:?}");
+        }
+    });
+    assert!((3..=9).contains(&n), "{n} vertices after frustum clipping");
+    // With six user planes the polygon may grow by one vertex per plane.
+    let mut cut = [a, b, c];
+    for (k, q) in cut.iter_mut().enumerate() {
+        q.clip_dist = std::array::from_fn(|i| ((i + k) as f32 * 1.7).sin());
+    }
+    let mut m = 0;
+    clip::triangle(&cut[0], &cut[1], &cut[2], 6, |p| m = p.len());
+    assert!(m <= 9 + 6, "{m}");
+    // Attribute continuity along the clip edge: a smooth triangle crossing the near plane
+    // and covering the screen matches the exactly clipped reference.
+    let s = perspective(64, 48);
+    let pos = [-20.0, -20.0, -0.1, 20.0, -20.0, -0.1, 0.0, 20.0, -8.0];
+    let col = [1., 0., 0., 1., 0., 1., 0., 1., 0., 0., 1., 1.];
+    let (fast, slow) = both(&s, 64, 48, Primitive::Triangles, &pos, 3, &col);
+    let e = reference::compare(&fast, &slow);
+    assert!(e.max <= 2 && e.over_one < 0.01, "{e:?}");
+    assert_eq!(covered(&fast), covered(&slow));
+}
+
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f32 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
+/// Random smooth-colored triangles in perspective.
+fn random_scene(rng: &mut Lcg, n: usize) -> (Vec<f32>, Vec<f32>) {
+    let (mut pos, mut col) = (Vec::new(), Vec::new());
+    for _ in 0..n {
+        let c = [
+            rng.next() * 8.0 - 4.0,
+            rng.next() * 6.0 - 3.0,
+            -2.0 - rng.next() * 10.0,
+        ];
+        for _ in 0..3 {
+            pos.extend([
+                c[0] + rng.next() * 2.0 - 1.0,
+                c[1] + rng.next() * 2.0 - 1.0,
+                c[2] + rng.next() - 0.5,
+            ]);
+            col.extend([rng.next(), rng.next(), rng.next(), 1.0]);
+        }
+    }
+    (pos, col)
+}
+
+#[test]
+fn case_03_tile_invariance_with_adjusted_projections() {
+    let (w, h) = (96, 64);
+    let (pos, col) = random_scene(&mut Lcg(3), 300);
+    let mut whole_s = perspective(w, h);
+    whole_s.depth_test = Some(CompareFunc::Less);
+    let mut whole = target(w as u32, h as u32);
+    draw(&whole_s, &mut whole, Primitive::Triangles, &pos, 3, &col);
+    let mut differ = 0;
+    for (i, j) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+        // Tile (i, j) of a 2 × 2 split: NDC [−1 + i, i] × [−1 + j, j] scaled to [−1, 1].
+        let adjust =
+            Mat4::from_translation(Vec3::new(1.0 - 2.0 * i as f32, 1.0 - 2.0 * j as f32, 0.0))
+                * Mat4::from_scale(Vec3::new(2.0, 2.0, 1.0));
+        let mut s = perspective(w / 2, h / 2);
+        s.projection = adjust * whole_s.projection;
+        s.depth_test = Some(CompareFunc::Less);
+        let mut tile = target(w as u32 / 2, h as u32 / 2);
+        draw(&s, &mut tile, Primitive::Triangles, &pos, 3, &col);
+        for y in 0..h as u32 / 2 {
+            for x in 0..w as u32 / 2 {
+                let (gx, gy) = (x + i * w as u32 / 2, y + j * h as u32 / 2);
+                let (a, b) = (tile.pixel(x, y), whole.pixel(gx, gy));
+                if a != b {
+                    differ += 1;
+                }
+            }
+        }
+    }
+    // The projection is multiplied by exact powers of two but its translation rounds: a
+    // vertex may snap 1/256 pixel differently, moving at most a few edge pixels.
+    assert!(
+        differ <= (w * h) as usize / 500,
+        "{differ} pixels differ between tiles and the whole"
+    );
+}
+
+#[test]
+fn case_04_huge_coordinates_and_viewports_larger_than_the_surface() {
+    let s = pixel_state(64, 48);
+    let col = [1., 0., 0., 1., 0., 1., 0., 1., 0., 0., 1., 1.];
+    // Float positions up to 2³² covering the screen.
+    let big = 4294967296.0f32;
+    let pos = [-big, -big, 0.0, big, -big, 0.0, 0.0, big, 0.0];
+    let (fast, slow) = both(&s, 64, 48, Primitive::Triangles, &pos, 3, &col);
+    assert_eq!(covered(&fast), 64 * 48, "{}", picture(&fast, &slow));
+    let e = reference::compare(&fast, &slow);
+    assert!(e.max <= 2, "{e:?}");
+    // Fixed positions at the ends of their range (±32767.99), and short and byte ones.
+    let fx: [i32; 9] = [i32::MIN, i32::MIN, 0, i32::MAX, i32::MIN, 0, 0, i32::MAX, 0];
+    let sh: [i16; 9] = [-32768, -32768, 0, 32767, -32768, 0, 0, 32767, 0];
+    let by: [i8; 9] = [-128, -128, 0, 127, -128, 0, 0, 127, 0];
+    for (data, ty) in [
+        (bytes(&fx), ComponentType::Fixed),
+        (bytes(&sh), ComponentType::Short),
+        (bytes(&by), ComponentType::Byte),
+    ] {
+        let d = DrawCall::new(
+            Primitive::Triangles,
+            Indices::Range { first: 0, count: 3 },
+            array(&data, ty, 3),
+        );
+        let (mut a, mut b) = (target(64, 48), target(64, 48));
+        core::render(&s, &d, &mut a).unwrap();
+        reference::render(&s, &d, &mut b);
+        assert_eq!(covered(&a), covered(&b), "{ty:?}");
+        assert!(covered(&a) > 64 * 48 / 3, "{ty:?}");
+    }
+    // A 8192 × 8192 viewport (GL_MAX_VIEWPORT_DIMS) on a 64 × 48 surface, offset so the
+    // surface sees part of it: pixels match the reference.
+    let mut v = RenderState::new(64, 48);
+    v.viewport = core::Viewport {
+        x: -4000,
+        y: -4000,
+        width: 8192,
+        height: 8192,
+    };
+    let tri = [
+        -0.021, -0.021, 0.0, -0.016, -0.0205, 0.0, -0.019, -0.015, 0.0,
+    ];
+    let (fast, slow) = both(&v, 64, 48, Primitive::Triangles, &tri, 3, &col);
+    assert_eq!(covered(&fast), covered(&slow));
+    assert!(covered(&fast) > 0);
+    // A size-8 point whose center (window (−2, 30)) lies inside the viewport but outside
+    // the surface: drawn where it covers the surface, 2 columns of 8.
+    v.point_size = 8.0;
+    let p = [-98.0 / 4096.0, -66.0 / 4096.0, 0.0];
+    let (fast, slow) = both(&v, 64, 48, Primitive::Points, &p, 3, &[]);
+    assert_eq!(covered(&fast), 16);
+    assert_eq!(covered(&slow), 16);
+}
+
+#[test]
+fn case_05_near_far_ratio_depth_range_slices_and_a_sky() {
+    let quad = |z: f32, s: f32| [-s, -s, z, s, -s, z, s, s, z, -s, -s, z, s, s, z, -s, s, z];
+    let red = rgba([1., 0., 0., 1.], 6);
+    let green = rgba([0., 1., 0., 1.], 6);
+    // n = 0.01, f = 10⁵: at distance 1000 two quads 20 units apart are 3.4 steps apart in
+    // a 24-bit buffer and 0.013 steps in a 16-bit one (see tests/depth_precision in
+    // properties.rs and ACCURACY.md for the whole table).
+    for (depth, resolves) in [(DepthFormat::D24, true), (DepthFormat::D16, false)] {
+        let mut s = RenderState::new(16, 16);
+        s.projection = Mat4::perspective_rh_gl(1.0, 1.0, 0.01, 1e5);
+        s.depth_test = Some(CompareFunc::Less);
+        let mut t = Target::new(16, 16, fmt(ColorFormat::Rgba8888, Some(depth), 0));
+        t.clear_depth(t.bounds(), 1.0);
+        draw(
+            &s,
+            &mut t,
+            Primitive::Triangles,
+            &quad(-1020.0, 2000.0),
+            3,
+            &green,
+        );
+        draw(
+            &s,
+            &mut t,
+            Primitive::Triangles,
+            &quad(-1000.0, 2000.0),
+            3,
+            &red,
+        );
+        let reds = count(&t, |p| p == [255, 0, 0, 255]);
+        assert_eq!(reds == 256, resolves, "{depth:?}: {reds} red");
+    }
+    // Depth-range slices: a far object in [0, 0.1] beats a near one in [0.1, 1]; a sky at
+    // [1, 1] with LEQUAL fills only what nothing else covered.
+    let mut s = perspective(32, 32);
+    s.depth_test = Some(CompareFunc::LessEqual);
+    let mut t = target(32, 32);
+    s.depth_range = [0.1, 1.0];
+    draw(
+        &s,
+        &mut t,
+        Primitive::Triangles,
+        &quad(-1.0, 0.3),
+        3,
+        &green,
+    );
+    s.depth_range = [0.0, 0.1];
+    draw(
+        &s,
+        &mut t,
+        Primitive::Triangles,
+        &quad(-40.0, 20.0),
+        3,
+        &red,
+    );
+    let reds = count(&t, |p| p == [255, 0, 0, 255]);
+    s.depth_range = [1.0, 1.0];
+    draw(
+        &s,
+        &mut t,
+        Primitive::Triangles,
+        &quad(-10.0, 100.0),
+        3,
+        &rgba([0., 0., 1., 1.], 6),
+    );
+    assert_eq!(
+        count(&t, |p| p == [0, 255, 0, 255]),
+        0,
+        "the far slice's object is in front"
+    );
+    assert_eq!(
+        count(&t, |p| p == [255, 0, 0, 255]),
+        reds,
+        "the sky never covers"
+    );
+    assert_eq!(count(&t, |p| p == [0, 0, 255, 255]), 32 * 32 - reds);
+}
+
+#[test]
+fn case_06_polygon_offset_on_grazing_polygons() {
+    // A floor seen at a grazing angle: depth slopes are large, and a decal drawn over it
+    // with the same vertices must win everywhere with a negative offset, lose everywhere
+    // with a positive one, and z-fight (LESS never passes) without one.
+    let floor = [
+        -2.0, -1.0, -0.6, 2.0, -1.0, -0.6, 2.0, -0.9, -40.0, -2.0, -1.0, -0.6, 2.0, -0.9, -40.0,
+        -2.0, -0.9, -40.0,
+    ];
+    let (w, h) = (64, 48);
+    for depth in [DepthFormat::D16, DepthFormat::D24] {
+        for (offset, want_all) in [
+            (Some((-1.0, -1.0)), Some(true)),
+            (Some((1.0, 1.0)), Some(false)),
+            (Some((-2.0, 0.0)), Some(true)),
+            (Some((0.0, -2.0)), None),
+        ] {
+            let mut s = perspective(w, h);
+            s.depth_test = Some(CompareFunc::Less);
+            let mut t = Target::new(
+                w as u32,
+                h as u32,
+                fmt(ColorFormat::Rgba8888, Some(depth), 0),
+            );
+            t.clear_depth(t.bounds(), 1.0);
+            draw(
+                &s,
+                &mut t,
+                Primitive::Triangles,
+                &floor,
+                3,
+                &rgba([0., 1., 0., 1.], 6),
+            );
+            let wall = count(&t, |p| p == [0, 255, 0, 255]);
+            assert!(wall > 300);
+            s.polygon_offset = offset.map(|(factor, units)| PolygonOffset { factor, units });
+            draw(
+                &s,
+                &mut t,
+                Primitive::Triangles,
+                &floor,
+                3,
+                &rgba([1., 0., 0., 1.], 6),
+            );
+            let decal = count(&t, |p| p == [255, 0, 0, 255]);
+            match want_all {
+                Some(true) => assert_eq!(decal, wall, "{depth:?} {offset:?}"),
+                Some(false) => assert_eq!(decal, 0, "{depth:?} {offset:?}"),
+                // Units alone: two steps always separate the same interpolated depth.
+                None => assert_eq!(decal, wall, "{depth:?} {offset:?}"),
+            }
+        }
+    }
+}
+
+#[test]
+fn case_07_degenerate_triangles_produce_no_pixels() {
+    let s = pixel_state(32, 32);
+    // Stitching triangles of a strip (repeated indices), collinear and coincident vertices.
+    let pos = [
+        4.0, 4.0, 0.0, 20.0, 4.0, 0.0, 4.0, 20.0, 0.0, // 0 1 2
+        4.0, 4.0, 0.0, 12.0, 12.0, 0.0, 28.3, 28.3, 0.0, // collinear 3 4 5
+        7.0, 9.0, 0.0, 7.0, 9.0, 0.0, 7.0, 9.0, 0.0, // coincident 6 7 8
+    ];
+    let p = bytes(&pos);
+    for idx in [
+        &[0u16, 0, 1][..],
+        &[1, 2, 2],
+        &[3, 4, 5],
+        &[6, 7, 8],
+        &[0, 1, 1, 2, 2, 2],
+    ] {
+        for prim in [
+            Primitive::Triangles,
+            Primitive::TriangleStrip,
+            Primitive::TriangleFan,
+        ] {
+            let d = DrawCall::new(prim, Indices::U16(idx), array(&p, ComponentType::Float, 3));
+            let mut t = target(32, 32);
+            core::render(&s, &d, &mut t).unwrap();
+            assert_eq!(covered(&t), 0, "{idx:?} {prim:?}");
+            assert_vertices_finite(&s, &d);
+        }
+    }
+    // A strip stitched with degenerate triangles covers what its real triangles cover,
+    // each pixel once (additive blending would show a second hit).
+    let mut add = s.clone();
+    add.blend = Some(Blend::func(BlendFactor::One, BlendFactor::One));
+    let strip = [0u16, 1, 2, 2, 6, 6, 4, 5];
+    let d = DrawCall {
+        color: AttribSource::Constant([0.2, 0.0, 0.0, 0.0]),
+        ..DrawCall::new(
+            Primitive::TriangleStrip,
+            Indices::U16(&strip),
+            array(&p, ComponentType::Float, 3),
+        )
+    };
+    let mut t = target(32, 32);
+    core::render(&add, &d, &mut t).unwrap();
+    assert_eq!(count(&t, |p| p[0] > 51), 0, "no pixel hit twice");
+}
+
+#[test]
+fn case_08_subpixel_and_sliver_triangles_match_exact_coverage() {
+    // Vertices on the 1/256 subpixel grid snap exactly, so coverage must equal the
+    // reference's literal sampling, pixel for pixel, even for long slivers.
+    let s = pixel_state(64, 64);
+    let mut rng = Lcg(8);
+    let q = |v: f32| (v * 256.0).round() / 256.0;
+    for i in 0..300 {
+        let (x, y) = (q(rng.next() * 64.0), q(rng.next() * 64.0));
+        let pos = if i % 2 == 0 {
+            // A long sliver, under a pixel thick.
+            let (dx, dy) = (q(rng.next() * 60.0 - 30.0), q(rng.next() * 60.0 - 30.0));
+            let t = q(rng.next() * 0.8);
+            [x, y, 0.0, x + dx, y + dy, 0.0, x + dx + t, y + dy - t, 0.0]
+        } else {
+            // Subpixel: all three vertices within one pixel.
+            [
+                x,
+                y,
+                0.0,
+                x + q(rng.next() * 0.9),
+                y,
+                0.0,
+                x,
+                y + q(rng.next() * 0.9),
+                0.0,
+            ]
+        };
+        let (fast, slow) = both(&s, 64, 64, Primitive::Triangles, &pos, 3, &[]);
+        assert_eq!(
+            covered(&fast),
+            covered(&slow),
+            "{pos:?}{}",
+            picture(&fast, &slow)
+        );
+        assert!(fast.color() == slow.color(), "{pos:?}");
+        if i % 2 == 1 {
+            assert!(covered(&fast) <= 1);
+        }
+    }
+}
+
+#[test]
+fn case_09_shared_edges_are_covered_exactly_once() {
+    let mut s = pixel_state(48, 48);
+    s.blend = Some(Blend::func(BlendFactor::One, BlendFactor::One));
+    let one = 1.0 / 255.0;
+    let mut rng = Lcg(9);
+    // A jittered strip and a fan around a non-integer center.
+    let mut strip = Vec::new();
+    for i in 0..=12 {
+        let x = 2.0 + i as f32 * 3.6 + rng.next() * 0.8;
+        strip.extend([
+            x,
+            3.0 + rng.next() * 2.0,
+            0.0,
+            x + rng.next(),
+            44.0 - rng.next() * 2.0,
+            0.0,
+        ]);
+    }
+    let mut fan = vec![23.7f32, 24.2, 0.0];
+    for i in 0..=17 {
+        let a = i as f32 / 17.0 * std::f32::consts::TAU;
+        fan.extend([23.7 + 20.3 * a.cos(), 24.2 + 19.1 * a.sin(), 0.0]);
+    }
+    for (prim, pos) in [
+        (Primitive::TriangleStrip, &strip),
+        (Primitive::TriangleFan, &fan),
+    ] {
+        let mut t = target(48, 48);
+        draw(
+            &s,
+            &mut t,
+            prim,
+            pos,
+            3,
+            &rgba([one, one, one, one], pos.len() / 3),
+        );
+        assert_eq!(count(&t, |p| p[0] > 1), 0, "{prim:?}: a pixel hit twice");
+        assert!(count(&t, |p| p[0] == 1) > 48 * 48 / 2, "{prim:?}");
+        // No cracks: every pixel inside the covered span of each row is hit.
+        for y in 6..42 {
+            let row: Vec<bool> = (0..48).map(|x| t.pixel(x, y)[0] == 1).collect();
+            if let (Some(a), Some(b)) = (row.iter().position(|&v| v), row.iter().rposition(|&v| v))
+            {
+                assert!(row[a..=b].iter().all(|&v| v), "{prim:?}: crack in row {y}");
+            }
+        }
+    }
+}
+
+#[test]
+fn case_10_wide_points_and_lines_at_the_viewport_border() {
+    let mut s = pixel_state(32, 32);
+    s.point_size = 8.0;
+    // Center just outside: the whole point vanishes. Just inside: the part on the surface.
+    // (An even-sized aliased point's square is centered on the pixel corner nearest its
+    // center, ES 1.1 §3.3: x = 0.5 covers columns 0 to 4.)
+    for (x, want) in [
+        (-0.5f32, 0usize),
+        (-0.01, 0),
+        (0.5, 40),
+        (31.5, 32),
+        (32.01, 0),
+        (16.0, 64),
+    ] {
+        let (fast, slow) = both(&s, 32, 32, Primitive::Points, &[x, 16.0, 0.0], 3, &[]);
+        assert_eq!(covered(&fast), want, "x = {x}");
+        assert_eq!(covered(&slow), want, "x = {x}");
+    }
+    // Wide lines crossing the border keep exactly the reference's pieces.
+    for width in [1.0, 3.0, 5.0, 8.0] {
+        s.line_width = width;
+        let pos = [
+            -10.0, 3.3, 0.0, 20.2, 40.0, 0.0, 5.5, -3.0, 0.0, 40.0, 12.7, 0.0,
+        ];
+        let (fast, slow) = both(&s, 32, 32, Primitive::Lines, &pos, 3, &[]);
+        assert_eq!(
+            covered(&fast),
+            covered(&slow),
+            "width {width}{}",
+            picture(&fast, &slow)
+        );
+    }
+}
+
+/// A draw of one screen-covering pixel-space quad with a constant normal.
+fn lit_vertices(
+    s: &RenderState,
+    pos: &[f32],
+    size: usize,
+    normal: [f32; 4],
+) -> Vec<core::vertex::ClipVertex> {
+    let p = bytes(pos);
+    let mut d = call(Primitive::Triangles, &p, size, None);
+    d.normal = AttribSource::Constant(normal);
+    assert_vertices_finite(s, &d)
+}
+
+fn one_light(light: Light, material: Material) -> Lighting {
+    Lighting {
+        lights: vec![light],
+        model_ambient: Vec4::ZERO,
+        front: material,
+        back: material,
+        ..Lighting::default()
+    }
+}
+
+#[test]
+fn case_12_singular_modelview_for_2d_drawing() {
+    // The book's example: glScalef(2, −2, 0) on the modelview, (.5, −.5, 0) on the texture
+    // matrix. Positions are fine (z = 0 everywhere); the normal matrix is singular.
+    let mut s = pixel_state(32, 32);
+    s.modelview = Mat4::from_scale(Vec3::new(2.0, -2.0, 0.0))
+        * Mat4::from_translation(Vec3::new(0.0, -16.0, 0.0));
+    s.texture_matrices[0] = Mat4::from_scale(Vec3::new(0.5, -0.5, 0.0));
+    let quad = [
+        0.0, 0.0, 3.0, 8.0, 0.0, 3.0, 8.0, 8.0, 3.0, 0.0, 0.0, 3.0, 8.0, 8.0, 3.0, 0.0, 8.0, 3.0,
+    ];
+    let mut t = target(32, 32);
+    draw(&s, &mut t, Primitive::Triangles, &quad, 3, &[]);
+    assert_eq!(
+        covered(&t),
+        16 * 16,
+        "the scaled quad covers rows 16..32, columns 0..16"
+    );
+    // With lighting (and NORMALIZE) on, the output is defined: finite and the same at
+    // every vertex (the normal matrix of the flattening scale still maps +z to ±z).
+    s.normalize = true;
+    s.lighting = Some(one_light(
+        Light {
+            diffuse: Vec4::ONE,
+            ..Light::default()
+        },
+        Material::default(),
+    ));
+    let v = lit_vertices(&s, &quad, 3, [0.0, 0.0, 1.0, 0.0]);
+    assert!(v.iter().all(|x| x.color == v[0].color), "{v:?}");
+}
+
+#[test]
+fn case_13_zero_non_unit_rescaled_and_integer_normals() {
+    let mut s = RenderState::new(8, 8);
+    let light = Light {
+        diffuse: Vec4::ONE,
+        ..Light::default()
+    };
+    let m = Material {
+        ambient: Vec4::ZERO,
+        diffuse: Vec4::splat(0.5),
+        ..Material::default()
+    };
+    s.lighting = Some(one_light(light, m));
+    let tri = [0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.5, 0.0];
+    // Zero-length with NORMALIZE: no NaN, n · l = 0.
+    s.normalize = true;
+    assert_eq!(lit_vertices(&s, &tri, 3, [0.0; 4])[0].color.x, 0.0);
+    // A non-unit normal is normalized with NORMALIZE, used as is without (saturating).
+    assert!((lit_vertices(&s, &tri, 3, [0.0, 0.0, 3.0, 0.0])[0].color.x - 0.5).abs() < 1e-6);
+    s.normalize = false;
+    assert_eq!(
+        lit_vertices(&s, &tri, 3, [0.0, 0.0, 3.0, 0.0])[0].color.x,
+        1.0
+    );
+    // RESCALE_NORMAL under a uniform scale equals NORMALIZE.
+    s.modelview = Mat4::from_scale(Vec3::splat(3.0));
+    s.rescale_normal = true;
+    let a = lit_vertices(&s, &tri, 3, [0.0, 0.6, 0.8, 0.0])[0].color;
+    s.rescale_normal = false;
+    s.normalize = true;
+    let b = lit_vertices(&s, &tri, 3, [0.0, 0.6, 0.8, 0.0])[0].color;
+    assert!((a - b).abs().max_element() < 1e-6, "{a} {b}");
+    // Byte and short normals map max positive to +1 ((2c + 1) / (2ⁿ − 1)).
+    let bn: [i8; 9] = [0, 0, 127, 0, 0, 127, 0, 0, 127];
+    let p = bytes(&tri);
+    let nb = bytes(&bn);
+    let mut d = call(Primitive::Triangles, &p, 3, None);
+    d.normal = AttribSource::Array(AttribArray {
+        normalized: true,
+        ..array(&nb, ComponentType::Byte, 3)
+    });
+    s.normalize = false;
+    s.modelview = Mat4::IDENTITY;
+    assert!((assert_vertices_finite(&s, &d)[0].color.x - 0.5).abs() < 1e-6);
+}
+
+#[test]
+fn case_14_lighting_edges() {
+    let tri = [0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.5, 0.0];
+    let mut s = RenderState::new(8, 8);
+    let spec = Material {
+        ambient: Vec4::ZERO,
+        diffuse: Vec4::ZERO,
+        specular: Vec4::ONE,
+        shininess: 0.0,
+        ..Material::default()
+    };
+    // Shininess 0: (n · h)⁰ = 1 whenever n · l ≠ 0 ...
+    let light = Light {
+        specular: Vec4::ONE,
+        position: Vec4::new(0.0, 1.0, 1.0, 0.0),
+        ..Light::default()
+    };
+    s.lighting = Some(one_light(light, spec));
+    assert_eq!(
+        lit_vertices(&s, &tri, 3, [0.0, 0.0, 1.0, 0.0])[0].color.x,
+        1.0
+    );
+    // ... and f = 0 when n · l is exactly 0 (a light in the surface's plane).
+    let grazing = Light {
+        position: Vec4::new(1.0, 0.0, 0.0, 0.0),
+        ..light
+    };
+    s.lighting = Some(one_light(grazing, spec));
+    assert_eq!(
+        lit_vertices(&s, &tri, 3, [0.0, 0.0, 1.0, 0.0])[0].color.x,
+        0.0
+    );
+    // Spot cutoffs 90 and 180, exponent 128; a vertex behind a 90° spot is dark.
+    let diffuse = Material {
+        ambient: Vec4::ZERO,
+        diffuse: Vec4::ONE,
+        ..Material::default()
+    };
+    for (cutoff, exponent, in_front, behind) in [
+        (180.0, 0.0, 1.0, 1.0),
+        (90.0, 0.0, 1.0, 0.0),
+        (90.0, 128.0, 1.0, 0.0),
+    ] {
+        let spot = Light {
+            diffuse: Vec4::ONE,
+            position: Vec4::new(0.0, 0.0, 1.0, 1.0),
+            spot_direction: Vec3::new(0.0, 0.0, -1.0),
+            spot_cutoff: cutoff,
+            spot_exponent: exponent,
+            ..Light::default()
+        };
+        s.lighting = Some(one_light(spot, diffuse));
+        // Vertex 0 at the origin, straight in front of the spot; a vertex above it (z = 2)
+        // is behind the spot (it faces the light with normal +z).
+        let c = lit_vertices(
+            &s,
+            &[0.0, 0.0, 0.0, 0.0, 0.0, 2.0, 1.0, 0.0, 0.0],
+            3,
+            [0.0, 0.0, 1.0, 0.0],
+        );
+        assert!(
+            (c[0].color.x - in_front).abs() < 1e-5,
+            "{cutoff} {exponent}: {:?}",
+            c[0].color
+        );
+        let back = lit_vertices(
+            &s,
+            &[0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0],
+            3,
+            [0.0, 0.0, -1.0, 0.0],
+        );
+        assert!(
+            (back[0].color.x - behind).abs() < 1e-5,
+            "{cutoff}: {:?}",
+            back[0].color
+        );
+    }
+    // Attenuation denominator 0 (k_c = 0, k_l = 1, the vertex on the light): saturates.
+    let at = Light {
+        diffuse: Vec4::ONE,
+        ambient: Vec4::splat(0.5),
+        position: Vec4::new(0.0, 0.0, 0.0, 1.0),
+        attenuation: [0.0, 1.0, 0.0],
+        ..Light::default()
+    };
+    s.lighting = Some(one_light(
+        at,
+        Material {
+            ambient: Vec4::ONE,
+            ..diffuse
+        },
+    ));
+    assert_eq!(
+        lit_vertices(&s, &tri, 3, [0.0, 0.0, 1.0, 0.0])[0]
+            .color
+            .truncate(),
+        Vec3::ONE
+    );
+    // Overbright and negative light colors are clamped after lighting.
+    for (c, want) in [(4.0, 1.0), (-3.0, 0.0)] {
+        let l = Light {
+            diffuse: Vec4::splat(c),
+            ..Light::default()
+        };
+        s.lighting = Some(one_light(l, diffuse));
+        assert_eq!(
+            lit_vertices(&s, &tri, 3, [0.0, 0.0, 1.0, 0.0])[0].color.x,
+            want
+        );
+    }
+    // Homogeneous vertices with w ∉ {0, 1} light like their divided position.
+    let pl = Light {
+        diffuse: Vec4::ONE,
+        position: Vec4::new(0.0, 0.0, 2.0, 1.0),
+        attenuation: [0.0, 0.0, 1.0],
+        ..Light::default()
+    };
+    s.lighting = Some(one_light(
+        pl,
+        Material {
+            ambient: Vec4::ZERO,
+            diffuse: Vec4::splat(0.5),
+            ..diffuse
+        },
+    ));
+    let a = lit_vertices(
+        &s,
+        &[0.0, 0.0, 0.5, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0],
+        4,
+        [0.0, 0.0, 1.0, 0.0],
+    )[0]
+    .color;
+    let b = lit_vertices(
+        &s,
+        &[0.0, 0.0, 1.5, 3.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0],
+        4,
+        [0.0, 0.0, 1.0, 0.0],
+    )[0]
+    .color;
+    assert!((a - b).abs().max_element() < 1e-6, "{a} {b}");
+}
+
+#[test]
+fn case_15_fog_clipped_at_far_zero_density_start_equals_end_huge_z() {
+    let fog = |mode, density, start, end| Fog {
+        mode,
+        density,
+        start,
+        end,
+        color: [0.0, 0.0, 1.0, 1.0],
+        quality: core::state::Quality::Nicest,
+    };
+    // An EXP2-fogged triangle crossing the far plane: the fog factor stays continuous up to
+    // the clip edge (the reference clips exactly).
+    let mut s = perspective(64, 48);
+    s.fog = Some(fog(FogMode::Exp2, 0.05, 0.0, 1.0));
+    let pos = [-3.0, -2.0, -5.0, 3.0, -2.0, -5.0, 0.0, 40.0, -80.0];
+    let (fast, slow) = both(
+        &s,
+        64,
+        48,
+        Primitive::Triangles,
+        &pos,
+        3,
+        &rgba([1., 0., 0., 1.], 3),
+    );
+    let e = reference::compare(&fast, &slow);
+    assert!(e.max <= 2, "{e:?}");
+    // Density 0: no fog. start == end: a hard edge (documented in core::texenv). Huge z.
+    assert_eq!(fog(FogMode::Exp, 0.0, 0.0, 1.0).factor(1e30), 1.0);
+    assert_eq!(fog(FogMode::Exp2, 0.0, 0.0, 1.0).factor(f32::MAX), 1.0);
+    let edge = fog(FogMode::Linear, 0.0, 5.0, 5.0);
+    assert_eq!((edge.factor(4.9), edge.factor(5.1)), (1.0, 0.0));
+    for z in [0.0, 1e10, 1e30, f32::MAX, f32::INFINITY] {
+        for m in [FogMode::Linear, FogMode::Exp, FogMode::Exp2] {
+            let f = fog(m, 0.5, 1.0, 10.0).factor(z);
+            assert!((0.0..=1.0).contains(&f), "{m:?} {z}: {f}");
+        }
+    }
+}
+
+#[test]
+fn case_20_fixed_point_overflow_saturation_and_nan() {
+    use GLES_CM::core::fixed;
+    assert_eq!(fixed::from_f32(32768.0), i32::MAX);
+    assert_eq!(fixed::from_f32(-32769.0), i32::MIN);
+    assert_eq!(fixed::from_f32(f32::INFINITY), i32::MAX);
+    assert_eq!(fixed::from_f32(f32::NEG_INFINITY), i32::MIN);
+    assert_eq!(fixed::from_f32(f32::NAN), 0);
+    // Products below 2⁻¹⁶ round to 0 (nearest), not to garbage.
+    assert_eq!(fixed::from_f32(1e-6), 0);
+    assert_eq!(fixed::from_f32(-1e-6), 0);
+    // The state is float: a fixed vertex at ±32768 through a scaling modelview does not
+    // overflow (the fixed-point core of App. A.1 would).
+    let mut s = pixel_state(32, 32);
+    s.modelview = Mat4::from_scale(Vec3::splat(1.0 / 2048.0));
+    let fx: [i32; 9] = [i32::MIN, 0, 0, 0, 0, 0, 0, i32::MAX, 0];
+    let d = bytes(&fx);
+    let call = DrawCall::new(
+        Primitive::Triangles,
+        Indices::Range { first: 0, count: 3 },
+        array(&d, ComponentType::Fixed, 3),
+    );
+    let v = assert_vertices_finite(&s, &call);
+    assert!(
+        (v[0].pos.x - (2.0 * -16.0 / 32.0 - 1.0)).abs() < 1e-6,
+        "{:?}",
+        v[0].pos
+    );
+}
+
+#[test]
+fn case_22_blending_edges_match_the_reference() {
+    let configs: Vec<(ColorFormat, Option<Blend>, Option<LogicOp>)> = vec![
+        (
+            ColorFormat::Rgba8888,
+            Some(Blend::func(BlendFactor::SrcAlphaSaturate, BlendFactor::One)),
+            None,
+        ),
+        (
+            ColorFormat::Rgb565,
+            Some(Blend::func(BlendFactor::SrcAlphaSaturate, BlendFactor::One)),
+            None,
+        ),
+        (
+            ColorFormat::Rgb565,
+            Some(Blend::func(BlendFactor::DstAlpha, BlendFactor::Zero)),
+            None,
+        ),
+        (
+            ColorFormat::Rgba8888,
+            Some(Blend::func(BlendFactor::One, BlendFactor::One)),
+            None,
+        ),
+        (
+            ColorFormat::Rgba8888,
+            Some(Blend::func(BlendFactor::One, BlendFactor::One)),
+            Some(LogicOp::Xor),
+        ),
+    ];
+    for (color, blend, logic) in configs {
+        let mut s = pixel_state(16, 16);
+        s.blend = blend;
+        s.logic_op = logic;
+        let quad = [
+            1.0, 1.0, 0.0, 15.0, 1.0, 0.0, 15.0, 15.0, 0.0, 1.0, 1.0, 0.0, 15.0, 15.0, 0.0, 1.0,
+            15.0, 0.0,
+        ];
+        let (mut a, mut b) = (
+            Target::new(16, 16, fmt(color, None, 0)),
+            Target::new(16, 16, fmt(color, None, 0)),
+        );
+        // Repeated accumulation: 8 passes of a dim overbright-prone color.
+        for k in 0..8 {
+            let c = rgba([0.3, 0.45, 0.2, 0.1 * k as f32], 6);
+            draw(&s, &mut a, Primitive::Triangles, &quad, 3, &c);
+            draw_ref(&s, &mut b, Primitive::Triangles, &quad, 3, &c);
+        }
+        let e = reference::compare(&a, &b);
+        assert!(e.max <= 1, "{color:?} {blend:?} {logic:?}: {e:?}");
+        if logic.is_none()
+            && color == ColorFormat::Rgba8888
+            && blend.unwrap().src_rgb == BlendFactor::One
+        {
+            assert_eq!(
+                a.pixel(8, 8)[..3],
+                [255, 255, 255],
+                "clamped after blending"
+            );
+        }
+    }
+}
+
+#[test]
+fn case_23_stencil_edges() {
+    let quad = [
+        0.0, 0.0, 0.0, 8.0, 0.0, 0.0, 8.0, 8.0, 0.0, 0.0, 0.0, 0.0, 8.0, 8.0, 0.0, 0.0, 8.0, 0.0,
+    ];
+    let test = |func, reference, op| StencilTest {
+        func,
+        reference,
+        mask: u32::MAX,
+        fail: StencilOp::Keep,
+        depth_fail: StencilOp::Keep,
+        depth_pass: op,
+    };
+    // No stencil buffer: the test always passes.
+    let mut s = pixel_state(8, 8);
+    s.stencil_test = Some(test(CompareFunc::Never, 0, StencilOp::Keep));
+    let mut t = Target::new(8, 8, fmt(ColorFormat::Rgba8888, None, 0));
+    draw(&s, &mut t, Primitive::Triangles, &quad, 3, &[]);
+    assert_eq!(covered(&t), 64);
+    // INCR saturates at 255, DECR at 0; a reference above 2⁸ − 1 is clamped.
+    let mut t = target(8, 8);
+    s.stencil_test = Some(test(CompareFunc::Always, 0, StencilOp::Incr));
+    for _ in 0..300 {
+        draw(&s, &mut t, Primitive::Triangles, &quad, 3, &[]);
+    }
+    assert!(t.stencil().iter().all(|&v| v == 255));
+    s.stencil_test = Some(test(CompareFunc::Equal, 1000, StencilOp::Keep));
+    t.clear_color(t.bounds(), [0.0; 4], [true; 4]);
+    draw(&s, &mut t, Primitive::Triangles, &quad, 3, &[]);
+    assert_eq!(covered(&t), 64, "ref 1000 compares as 255");
+    s.stencil_test = Some(test(CompareFunc::Always, 0, StencilOp::Decr));
+    for _ in 0..300 {
+        draw(&s, &mut t, Primitive::Triangles, &quad, 3, &[]);
+    }
+    assert!(t.stencil().iter().all(|&v| v == 0));
+    // Clear values are masked to the buffer's bits and by the write mask.
+    t.clear_stencil(t.bounds(), 0x1F3, 0x0F);
+    assert!(t.stencil().iter().all(|&v| v == 0x03));
+}
+
+#[test]
+fn case_29_out_of_range_indices_do_not_crash() {
+    let s = pixel_state(16, 16);
+    let pos = [1.0f32, 1.0, 0.0, 15.0, 1.0, 0.0, 8.0, 15.0, 0.0];
+    let p = bytes(&pos);
+    // Indices past the array read the default position (0, 0, 0, 1): documented, no panic.
+    for idx in [&[0u32, 1, 7][..], &[0, 1, u32::MAX], &[1_000_000, 2, 0]] {
+        let d = DrawCall::new(
+            Primitive::Triangles,
+            Indices::U32(idx),
+            array(&p, ComponentType::Float, 3),
+        );
+        let mut t = target(16, 16);
+        core::render(&s, &d, &mut t).unwrap();
+        assert_clean(&t, [255; 4], [255; 4]);
+        let mut r = target(16, 16);
+        reference::render(&s, &d, &mut r);
+        assert_eq!(covered(&t), covered(&r), "{idx:?}");
+    }
+}
+
+#[test]
+fn case_11_user_clip_plane_under_singular_and_odd_modelviews() {
+    let gl = Gl::rgba8(32, 32);
+    gl.pixel_ortho();
+    let quad = [
+        0.0, 0.0, 0.0, 32.0, 0.0, 0.0, 32.0, 32.0, 0.0, 0.0, 0.0, 0.0, 32.0, 32.0, 0.0, 0.0, 32.0,
+        0.0,
+    ];
+    // SAFETY: a context is current; the plane arrays hold 4 floats.
+    unsafe {
+        // An odd modelview (non-uniform scale and translation): the plane x ≥ 4 in object
+        // coordinates is x_eye ≥ 2·4 + 3 = 11 in eye coordinates.
+        glTranslatef(3.0, 0.0, 0.0);
+        glScalef(2.0, 0.5, 1.0);
+        glClipPlanef(GL_CLIP_PLANE0, [1.0, 0.0, 0.0, -4.0].as_ptr());
+        glLoadIdentity();
+        glEnable(GL_CLIP_PLANE0);
+        glColor4f(1.0, 1.0, 1.0, 1.0);
+        gl_draw(GL_TRIANGLES, &quad);
+        let px = gl.read();
+        assert_eq!(gl_covered(&px), (32 - 11) * 32);
+        // A singular modelview: no crash, no error, no garbage. Documented: the stored
+        // plane is whatever the inverse transpose gives (non-finite here), and a plane
+        // with non-finite coefficients clips everything.
+        glClear(GL_COLOR_BUFFER_BIT);
+        glScalef(0.0, 0.0, 0.0);
+        glClipPlanef(GL_CLIP_PLANE0, [1.0, 0.0, 0.0, -4.0].as_ptr());
+        assert_eq!(err(), GL_NO_ERROR);
+        let mut eq = [0.0f32; 4];
+        glGetClipPlanef(GL_CLIP_PLANE0, eq.as_mut_ptr());
+        glLoadIdentity();
+        gl_draw(GL_TRIANGLES, &quad);
+        let px = gl.read();
+        let n = gl_covered(&px);
+        assert!(px.iter().all(|p| *p == [0, 0, 0, 0] || *p == [255; 4]));
+        if eq.iter().all(|c| c.is_finite()) {
+            assert!(n == 0 || n == 32 * 32, "{eq:?}: {n}");
+        } else {
+            assert_eq!(n, 0, "{eq:?}");
+        }
+        glDisable(GL_CLIP_PLANE0);
+    }
+}
