@@ -4,6 +4,9 @@
  * and interleaving; glDrawArrays and glDrawElements (unsigned byte and short) with the
  * triangle modes pixel-checked and the line and point modes accepted; the current color
  * (f, x, ub); client state queries; and every error of these calls.
+ *
+ * ct:softpipe-edges (the line and triangle edges drawn here run through pixel centers,
+ * where softpipe settles ties its own way)
  */
 #include "common.h"
 

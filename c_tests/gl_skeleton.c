@@ -3,6 +3,9 @@
  * overlapping quads drawn with GL_TRIANGLES under the depth test, and a smooth-shaded
  * triangle. Flat-colored pixels are exact; interpolated colors are allowed one step, since
  * the specification leaves the rounding of interpolated values to the implementation.
+ *
+ * ct:softpipe-edges (the line and triangle edges drawn here run through pixel centers,
+ * where softpipe settles ties its own way)
  */
 #include "common.h"
 
