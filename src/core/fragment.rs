@@ -90,7 +90,11 @@ impl TexStage {
         })
     }
 
-    /// The specialized filter for a single unit, or for none.
+    /// The specialized filter for a single unit, or for none. F_NEAREST and F_BILINEAR
+    /// skip λ: their minification and magnification filters are the same filter on level
+    /// 0, so no λ, whatever the `EXT_texture_lod_bias` bias, changes what they sample;
+    /// every route that picks a level adds the bias (in [`Sampler::sample_255`] and
+    /// [`Sampler::trilinear`]).
     fn filter(&self) -> u8 {
         let Some((_, u)) = self.units.first() else {
             return F_NONE;

@@ -744,7 +744,8 @@ impl Texture {
 /// f32 (24-bit mantissa: with the pipeline's removal of whole REPEAT periods, weights are
 /// exact to well under 2⁻¹² of a texel for every level size). λ = log₂ ρ; λ ≤ c is
 /// magnification, with c = ½ when the magnification filter is LINEAR and the minification
-/// filter NEAREST_MIPMAP_NEAREST or NEAREST_MIPMAP_LINEAR, else 0.
+/// filter NEAREST_MIPMAP_NEAREST or NEAREST_MIPMAP_LINEAR, else 0. `EXT_texture_lod_bias`:
+/// [`Sampler::lod_bias`] is added to λ before that decision and the level selection.
 #[derive(Clone, Debug)]
 pub struct Sampler {
     pub levels: Vec<Arc<Image>>,
@@ -759,7 +760,14 @@ pub struct Sampler {
     /// NEGATIVE_X, POSITIVE_Y, NEGATIVE_Y, POSITIVE_Z, NEGATIVE_Z), each clamping to its
     /// edges; this sampler is then the POSITIVE_X face's.
     pub cube: Option<Arc<[Sampler; 6]>>,
+    /// `EXT_texture_lod_bias`: the unit's bias, already clamped to ±[`MAX_LOD_BIAS`], added
+    /// to λ by [`Sampler::sample_255`] and [`Sampler::trilinear`] (the cube faces carry it
+    /// too). 0 unless set by [`Sampler::with_lod_bias`].
+    pub lod_bias: f32,
 }
+
+/// `GL_MAX_TEXTURE_LOD_BIAS_EXT`: the largest magnitude of a level-of-detail bias.
+pub const MAX_LOD_BIAS: f32 = 16.0;
 
 impl PartialEq for Sampler {
     /// The same images (by identity) and parameters.
@@ -771,9 +779,10 @@ impl PartialEq for Sampler {
                 .zip(&o.levels)
                 .all(|(a, b)| Arc::ptr_eq(a, b))
             && (self.min, self.mag, self.wrap_s, self.wrap_t) == (o.min, o.mag, o.wrap_s, o.wrap_t)
+            && self.lod_bias.to_bits() == o.lod_bias.to_bits()
             && match (&self.cube, &o.cube) {
                 (None, None) => true,
-                (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+                (Some(a), Some(b)) => Arc::ptr_eq(a, b) || a[..] == b[..],
                 _ => false,
             }
     }
@@ -821,7 +830,30 @@ impl Sampler {
             format,
             c,
             cube: None,
+            lod_bias: 0.0,
         }
+    }
+
+    /// This sampler with level-of-detail bias `bias` (`EXT_texture_lod_bias`), clamped to
+    /// ±[`MAX_LOD_BIAS`] (NaN counts as 0), on every cube face as well. Shares `self` when
+    /// the bias is unchanged.
+    pub fn with_lod_bias(self: &Arc<Sampler>, bias: f32) -> Arc<Sampler> {
+        let bias = if bias.is_nan() {
+            0.0
+        } else {
+            bias.clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS)
+        };
+        if bias.to_bits() == self.lod_bias.to_bits() {
+            return self.clone();
+        }
+        let mut s = (**self).clone();
+        s.lod_bias = bias;
+        if let Some(faces) = &s.cube {
+            let mut faces = (**faces).clone();
+            faces.iter_mut().for_each(|f| f.lod_bias = bias);
+            s.cube = Some(Arc::new(faces));
+        }
+        Arc::new(s)
     }
 
     /// Level 0's width and height.
@@ -890,6 +922,7 @@ impl Sampler {
     /// LINEAR_MIPMAP_LINEAR minification, LINEAR magnification, in 0 ..= 255 per channel.
     #[inline(always)]
     pub fn trilinear(&self, s: f32, t: f32, lambda: f32) -> [f32; 4] {
+        let lambda = lambda + self.lod_bias;
         if lambda.is_nan() || lambda <= self.c {
             return self.bilinear(0, s, t);
         }
@@ -904,7 +937,8 @@ impl Sampler {
         std::array::from_fn(|c| a[c] + (b[c] - a[c]) * f)
     }
 
-    /// The filtered texture value at (s, t) with level of detail λ, in [0, 1] per channel.
+    /// The filtered texture value at (s, t) with level of detail λ (before the bias), in
+    /// [0, 1] per channel.
     #[inline]
     pub fn sample(&self, s: f32, t: f32, lambda: f32) -> [f32; 4] {
         let v = self.sample_255(s, t, lambda);
@@ -914,6 +948,7 @@ impl Sampler {
     /// [`Sampler::sample`] in 0 ..= 255 per channel.
     #[inline]
     pub fn sample_255(&self, s: f32, t: f32, lambda: f32) -> [f32; 4] {
+        let lambda = lambda + self.lod_bias;
         // NaN λ (from degenerate derivatives) counts as magnification.
         if lambda.is_nan() || lambda <= self.c {
             return self.filter(self.mag == MagFilter::Linear, 0, s, t);

@@ -132,6 +132,7 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_EXT_texture_format_BGRA8888",
     "GL_OES_draw_texture",
     "GL_OES_texture_cube_map",
+    "GL_EXT_texture_lod_bias",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
@@ -268,6 +269,9 @@ impl Context {
                 Value::ints(&[MAX_VIEWPORT_DIM as i64, MAX_VIEWPORT_DIM as i64])
             }
             GL_SUBPIXEL_BITS => Value::int(SUBPIXEL_BITS as i64),
+            super::tokens_ext::GL_MAX_TEXTURE_LOD_BIAS_EXT => {
+                Value::floats(&[crate::core::texture::MAX_LOD_BIAS])
+            }
             // Every config is single-sample.
             GL_SAMPLE_BUFFERS | GL_SAMPLES => Value::int(0),
             GL_RED_BITS => Value::int(bits[0] as i64),

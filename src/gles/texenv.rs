@@ -9,7 +9,9 @@ use super::context::{Context, MAX_TEXTURE_UNITS};
 use super::get::Value;
 use super::params::{clamp01, Params};
 use super::tokens::*;
-use super::tokens_ext::GL_NORMAL_MAP_OES;
+use super::tokens_ext::{
+    GL_NORMAL_MAP_OES, GL_TEXTURE_FILTER_CONTROL_EXT, GL_TEXTURE_LOD_BIAS_EXT,
+};
 use super::types::*;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -29,6 +31,9 @@ pub struct TexEnvUnit {
     pub alpha_scale: f32,
     /// `GL_COORD_REPLACE_OES` of the `GL_POINT_SPRITE_OES` target.
     pub coord_replace: bool,
+    /// `GL_TEXTURE_LOD_BIAS_EXT` of the `GL_TEXTURE_FILTER_CONTROL_EXT` target
+    /// (`EXT_texture_lod_bias`), as set: clamped to ±`GL_MAX_TEXTURE_LOD_BIAS_EXT` when used.
+    pub lod_bias: f32,
 }
 
 impl Default for TexEnvUnit {
@@ -45,6 +50,7 @@ impl Default for TexEnvUnit {
             rgb_scale: 1.0,
             alpha_scale: 1.0,
             coord_replace: false,
+            lod_bias: 0.0,
         }
     }
 }
@@ -102,7 +108,9 @@ fn slot(pname: GLenum) -> Option<Slot> {
 }
 
 impl Context {
-    /// `glTexEnv{f,i,x}[v]` for the active texture unit. Unknown targets and names, and
+    /// `glTexEnv{f,i,x}[v]` for the active texture unit (also `EXT_texture_lod_bias`'s
+    /// `GL_TEXTURE_FILTER_CONTROL_EXT` / `GL_TEXTURE_LOD_BIAS_EXT`, any float, stored as
+    /// given and clamped when used). Unknown targets and names, and
     /// enumerants a name does not accept, are `GL_INVALID_ENUM`; scales other than 1, 2
     /// and 4 and a `GL_COORD_REPLACE_OES` other than TRUE/FALSE are `GL_INVALID_VALUE`.
     pub fn tex_env(&mut self, target: GLenum, pname: GLenum, p: Params<'_>) {
@@ -119,6 +127,10 @@ impl Context {
                     _ => return self.set_error(GL_INVALID_VALUE),
                 };
                 self.texenv.units[unit].coord_replace = on;
+                return;
+            }
+            (GL_TEXTURE_FILTER_CONTROL_EXT, GL_TEXTURE_LOD_BIAS_EXT) => {
+                self.texenv.units[unit].lod_bias = p.number(0);
                 return;
             }
             (GL_TEXTURE_ENV, _) => {}
@@ -201,6 +213,9 @@ impl Context {
         let e = |v: GLenum| Value::int(v as i64);
         let v = match (target, pname) {
             (GL_POINT_SPRITE_OES, GL_COORD_REPLACE_OES) => Value::int(u.coord_replace as i64),
+            (GL_TEXTURE_FILTER_CONTROL_EXT, GL_TEXTURE_LOD_BIAS_EXT) => {
+                Value::floats(&[u.lod_bias])
+            }
             (GL_TEXTURE_ENV, _) => match slot(pname) {
                 Some(Slot::Mode) => e(u.mode),
                 Some(Slot::Color) => Value::norm(&u.color),
@@ -310,7 +325,7 @@ impl Context {
             });
             rs.textures[u] = if let Some(sampler) = sampler {
                 sampler.map(|sampler| core_env::TextureUnit {
-                    sampler,
+                    sampler: sampler.with_lod_bias(self.texenv.units[u].lod_bias),
                     env: self.texenv.units[u].to_core(),
                     coord_replace: self.texenv.units[u].coord_replace,
                 })

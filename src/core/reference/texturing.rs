@@ -2,8 +2,8 @@
 //! independent of `core::texture`'s sampling and `core::texenv`: coordinates wrapped by the
 //! specification's formulas (REPEAT takes the fraction, CLAMP_TO_EDGE clamps to
 //! [1/2N, 1 − 1/2N], MIRRORED_REPEAT mirrors odd periods), λ = log₂ ρ with ρ from the exact
-//! derivatives of s/q and t/q at the pixel, the environment tables written out, and fog
-//! per pixel from the interpolated |z_eye|.
+//! derivatives of s/q and t/q at the pixel, plus the `EXT_texture_lod_bias` bias, the
+//! environment tables written out, and fog per pixel from the interpolated |z_eye|.
 
 use glam::DVec4;
 
@@ -155,7 +155,8 @@ pub fn sample(sm: &Sampler, c: &Coords) -> DVec4 {
     let rho = ((c.ds_dx * w).powi(2) + (c.dt_dx * h).powi(2))
         .sqrt()
         .max(((c.ds_dy * w).powi(2) + (c.dt_dy * h).powi(2)).sqrt());
-    let lambda = rho.log2();
+    // EXT_texture_lod_bias: the unit's bias (clamped when it was set) before everything.
+    let lambda = rho.log2() + sm.lod_bias as f64;
     let cswitch = if sm.mag == MagFilter::Linear
         && matches!(
             sm.min,
