@@ -1,6 +1,6 @@
 //! The numerical hard cases of `../shared/reference/gles-checklist.md` §4 (1–30), one test
 //! each, named after the case, and the M3G hard cases of `m3g-checklist.md` §5 that
-//! `tests/m3g_*.rs` do not already cover (the `m3g_` tests at the end). Each asserts the
+//! `tests/m3g_*.rs` do not already cover (in `tests/m3g_hard_cases.rs`). Each asserts the
 //! behavior the specification prescribes or, where it leaves room, the one we document, and
 //! that no NaN, infinity or garbage pixel appears: every pixel is either the clear color or
 //! a color the draw can produce.
@@ -1398,4 +1398,849 @@ fn case_11_user_clip_plane_under_singular_and_odd_modelviews() {
         }
         glDisable(GL_CLIP_PLANE0);
     }
+}
+
+// ---------------------------------------------------------------------------------------
+// Texturing, quantized vertices, read-back, queries, animation and EGL (cases 16–30).
+
+#[allow(non_snake_case, dead_code)]
+extern "C" {
+    fn glTexSubImage2D(
+        t: u32,
+        l: i32,
+        x: i32,
+        y: i32,
+        w: i32,
+        h: i32,
+        f: u32,
+        ty: u32,
+        p: *const c_void,
+    );
+    fn glActiveTexture(t: u32);
+    fn glClientActiveTexture(t: u32);
+    fn glMultiTexCoord4f(t: u32, s: f32, tt: f32, r: f32, q: f32);
+    fn glTexEnvf(t: u32, p: u32, v: f32);
+    fn glScissor(x: i32, y: i32, w: i32, h: i32);
+    fn glFogf(p: u32, v: f32);
+    fn glGetBooleanv(p: u32, v: *mut u8);
+    fn glCurrentPaletteMatrixOES(i: u32);
+}
+
+const RED: [u8; 4] = [255, 0, 0, 255];
+const GREEN: [u8; 4] = [0, 255, 0, 255];
+const BLUE: [u8; 4] = [0, 0, 255, 255];
+const WHITE: [u8; 4] = [255; 4];
+
+/// A bound RGBA8 texture `w` × `h` (level 0) with NEAREST filters and `wrap` on s and t.
+fn gl_texture(w: i32, h: i32, texels: &[[u8; 4]], wrap: u32) -> u32 {
+    let mut name = 0;
+    // SAFETY: a context is current; `texels` holds w × h RGBA8 texels.
+    unsafe {
+        glGenTextures(1, &mut name);
+        glBindTexture(GL_TEXTURE_2D, name);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap as i32);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap as i32);
+        tex_level(0, w, h, texels);
+        glEnable(GL_TEXTURE_2D);
+    }
+    name
+}
+
+fn tex_level(level: i32, w: i32, h: i32, texels: &[[u8; 4]]) {
+    assert_eq!(texels.len(), (w * h) as usize);
+    // SAFETY: a context is current; `texels` holds w × h RGBA8 texels.
+    unsafe {
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            level,
+            GL_RGBA as i32,
+            w,
+            h,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            texels.as_ptr().cast(),
+        );
+    }
+}
+
+/// A quad from (x0, y0) to (x1, y1) whose corners (counter-clockwise from the lower left)
+/// carry the `n`-component texture coordinates `tc`.
+fn gl_tex_quad(x0: f32, y0: f32, x1: f32, y1: f32, tc: &[f32], n: usize) {
+    assert_eq!(tc.len(), 4 * n);
+    let xyz = [
+        x0, y0, 0.0, x1, y0, 0.0, x1, y1, 0.0, x0, y0, 0.0, x1, y1, 0.0, x0, y1, 0.0,
+    ];
+    let mut t = Vec::new();
+    for k in [0, 1, 2, 0, 2, 3] {
+        t.extend_from_slice(&tc[k * n..(k + 1) * n]);
+    }
+    // SAFETY: both arrays outlive the draw and hold 6 vertices.
+    unsafe {
+        glColor4f(1.0, 1.0, 1.0, 1.0);
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glTexCoordPointer(n as i32, GL_FLOAT, 0, t.as_ptr().cast());
+        gl_draw(GL_TRIANGLES, &xyz);
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    }
+}
+
+/// Texture coordinates (s, t) that vary only in s, from `s0` on the left to `s1`.
+fn s_ramp(s0: f32, s1: f32) -> [f32; 8] {
+    [s0, 0.5, s1, 0.5, s1, 0.5, s0, 0.5]
+}
+
+fn assert_only(px: &[[u8; 4]], allowed: &[[u8; 4]]) {
+    for (i, p) in px.iter().enumerate() {
+        assert!(allowed.contains(p), "garbage pixel {p:?} at {i}");
+    }
+}
+
+#[test]
+fn case_16_texture_coordinate_ranges_and_projective_q() {
+    let gl = Gl::rgba8(64, 4);
+    gl.pixel_ortho();
+    let tex = gl_texture(2, 1, &[RED, GREEN], GL_REPEAT);
+    let row = |gl: &Gl| gl.read()[..64].to_vec();
+    let draw = |tc: &[f32], n: usize| {
+        // SAFETY: a context is current.
+        unsafe { glClear(GL_COLOR_BUFFER_BIT) };
+        gl_tex_quad(0.0, 0.0, 64.0, 4.0, tc, n);
+        assert_eq!(err(), GL_NO_ERROR);
+        let px = gl.read();
+        assert_only(&px, &[RED, GREEN]);
+        row(&gl)
+    };
+    // REPEAT: shifts by whole periods up to the required range 2¹⁰ give the same image.
+    let base = draw(&s_ramp(0.0, 1.0), 2);
+    assert_eq!(base[..32], [RED; 32]);
+    assert_eq!(base[32..], [GREEN; 32]);
+    for s0 in [1023.0, -1024.0, 512.0, -1.0] {
+        assert_eq!(draw(&s_ramp(s0, s0 + 1.0), 2), base, "s from {s0}");
+    }
+    // Negative values: −0.7 … 3.0 is 3.7 repeats, each pixel its texel of fract(s).
+    let px = draw(&s_ramp(-0.7, 3.0), 2);
+    for (x, p) in px.iter().enumerate() {
+        let s = -0.7 + 3.7 * (x as f64 + 0.5) / 64.0;
+        let f = (s * 2.0).rem_euclid(2.0);
+        if (f - f.round()).abs() < 0.02 {
+            continue;
+        }
+        let want = if f < 1.0 { RED } else { GREEN };
+        assert_eq!(*p, want, "x {x}, s {s}");
+    }
+    // Exactly 0 and 1: CLAMP_TO_EDGE gives the edge texels, REPEAT wraps 1 to texel 0.
+    assert_eq!(draw(&s_ramp(1.0, 1.0), 2), [RED; 64]);
+    // SAFETY: a context is current.
+    unsafe { glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE as i32) };
+    assert_eq!(draw(&s_ramp(0.0, 0.0), 2), [RED; 64]);
+    assert_eq!(draw(&s_ramp(1.0, 1.0), 2), [GREEN; 64]);
+    assert_eq!(draw(&s_ramp(-5.0, 6.0)[..], 2)[0], RED);
+    // Projective q: (q·s, q·t, 0, q) is (s, t) for any uniform q, also negative.
+    let strq = |s0: f32, s1: f32, q: [f32; 4]| {
+        let s = [s0, s1, s1, s0];
+        let mut v = Vec::new();
+        for k in 0..4 {
+            v.extend_from_slice(&[s[k] * q[k], 0.5 * q[k], 0.0, q[k]]);
+        }
+        v
+    };
+    for q in [2.0, -1.0, 1e-3, 1e3] {
+        assert_eq!(draw(&strq(0.0, 1.0, [q; 4]), 4), base, "q {q}");
+    }
+    // Per-pixel q: s/q interpolated per fragment, not per vertex. Left q = 1, s/q = 0;
+    // right q = 3, s/q = 1: s/q = 3u / (1 + 2u) crosses 0.5 at u = ¼ (per-vertex: ½).
+    let px = draw(&strq(0.0, 1.0, [1.0, 3.0, 3.0, 1.0]), 4);
+    assert_eq!(px[12], RED);
+    assert_eq!(px[20], GREEN, "q interpolated per pixel");
+    assert_eq!(px[28], GREEN);
+    // q of differing signs and q → 0: undefined texels, but only texels.
+    draw(&strq(0.0, 1.0, [1.0, -1.0, -1.0, 1.0]), 4);
+    draw(&strq(0.0, 1.0, [1.0, 1e-30, 1e-30, 1.0]), 4);
+    draw(&strq(0.0, 1.0, [0.0, 1.0, 1.0, 0.0]), 4);
+    // SAFETY: a context is current.
+    unsafe {
+        glDisable(GL_TEXTURE_2D);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    let _ = tex;
+}
+
+fn level_color(k: usize) -> [u8; 4] {
+    [(k * 40) as u8, 255 - (k * 30) as u8, (k * 17) as u8, 255]
+}
+
+#[test]
+fn case_17_texture_shapes_mip_chains_incomplete_and_generate_mipmap() {
+    let gl = Gl::rgba8(64, 64);
+    gl.pixel_ortho();
+    let full = [0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0];
+    let clear = || {
+        // SAFETY: a context is current.
+        unsafe { glClear(GL_COLOR_BUFFER_BIT) }
+    };
+    // 1×1: one color everywhere, whatever the coordinates.
+    gl_texture(1, 1, &[BLUE], GL_REPEAT);
+    clear();
+    gl_tex_quad(
+        0.0,
+        0.0,
+        64.0,
+        64.0,
+        &[-3.0, -3.0, 5.5, -3.0, 5.5, 7.0, -3.0, 7.0],
+        2,
+    );
+    assert!(gl.read().iter().all(|p| *p == BLUE));
+    // 1×N: horizontal stripes; N×1: vertical ones.
+    let four = [RED, GREEN, BLUE, WHITE];
+    gl_texture(1, 4, &four, GL_REPEAT);
+    clear();
+    gl_tex_quad(0.0, 0.0, 64.0, 64.0, &full, 2);
+    let px = gl.read();
+    for y in 0..64 {
+        assert!(
+            px[y * 64..][..64].iter().all(|p| *p == four[y / 16]),
+            "row {y}"
+        );
+    }
+    gl_texture(4, 1, &four, GL_REPEAT);
+    clear();
+    gl_tex_quad(0.0, 0.0, 64.0, 64.0, &full, 2);
+    let px = gl.read();
+    for x in 0..64 {
+        assert!(
+            (0..64).all(|y| px[y * 64 + x] == four[x / 16]),
+            "column {x}"
+        );
+    }
+    // The full chain of a 64×32 texture: 7 levels, each a solid color. A square quad of
+    // 64 / 2ᵏ pixels has ρ = 2ᵏ and samples level k (NEAREST_MIPMAP_NEAREST).
+    let chain = |levels: &[(usize, i32, i32)]| {
+        gl_texture(64, 32, &vec![level_color(0); 64 * 32], GL_REPEAT);
+        for &(k, w, h) in levels {
+            tex_level(k as i32, w, h, &vec![level_color(k); (w * h) as usize]);
+        }
+        // SAFETY: a context is current.
+        unsafe {
+            glTexParameteri(
+                GL_TEXTURE_2D,
+                GL_TEXTURE_MIN_FILTER,
+                GL_NEAREST_MIPMAP_NEAREST as i32,
+            )
+        };
+    };
+    let sizes: Vec<_> = (1..7)
+        .map(|k| (k, (64 >> k).max(1), (32 >> k).max(1)))
+        .collect();
+    chain(&sizes);
+    assert_eq!(err(), GL_NO_ERROR);
+    for k in 0..7 {
+        clear();
+        let side = (64 >> k) as f32;
+        gl_tex_quad(0.0, 0.0, side, side, &full, 2);
+        assert_eq!(gl.read()[0], level_color(k), "level {k}");
+    }
+    // Incomplete: a wrong level size, or mixed formats. The unit is disabled (white).
+    let mut wrong = sizes.clone();
+    wrong[2] = (3, 8, 8);
+    chain(&wrong);
+    clear();
+    gl_tex_quad(0.0, 0.0, 4.0, 4.0, &full, 2);
+    assert_eq!(gl.read()[0], WHITE, "wrong level size");
+    chain(&sizes);
+    // SAFETY: a context is current; 4 RGB texels.
+    unsafe {
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            4,
+            GL_RGB as i32,
+            4,
+            2,
+            0,
+            GL_RGB,
+            GL_UNSIGNED_BYTE,
+            [9u8; 24].as_ptr().cast(),
+        );
+    }
+    clear();
+    gl_tex_quad(0.0, 0.0, 4.0, 4.0, &full, 2);
+    assert_eq!(gl.read()[0], WHITE, "mixed formats");
+    // ... but a non-mipmapped filter needs only level 0.
+    // SAFETY: a context is current.
+    unsafe { glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32) };
+    clear();
+    gl_tex_quad(0.0, 0.0, 4.0, 4.0, &full, 2);
+    assert_eq!(gl.read()[0], level_color(0));
+    // GENERATE_MIPMAP: levels follow level 0, also through TexSubImage; turned off, they
+    // keep what they had.
+    gl_texture(64, 32, &vec![RED; 64 * 32], GL_REPEAT);
+    let sub = |c: [u8; 4]| {
+        // SAFETY: a context is current; 64 × 32 RGBA8 texels.
+        unsafe {
+            glTexSubImage2D(
+                GL_TEXTURE_2D,
+                0,
+                0,
+                0,
+                64,
+                32,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                vec![c; 64 * 32].as_ptr().cast(),
+            )
+        }
+    };
+    let tiny_and_big = || {
+        clear();
+        gl_tex_quad(0.0, 0.0, 1.0, 1.0, &full, 2);
+        gl_tex_quad(
+            32.0,
+            32.0,
+            64.0,
+            64.0,
+            &[0.0, 0.0, 0.5, 0.0, 0.5, 1.0, 0.0, 1.0],
+            2,
+        );
+        let px = gl.read();
+        (px[0], px[40 * 64 + 40])
+    };
+    // SAFETY: a context is current.
+    unsafe {
+        glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+        glTexParameteri(
+            GL_TEXTURE_2D,
+            GL_TEXTURE_MIN_FILTER,
+            GL_NEAREST_MIPMAP_NEAREST as i32,
+        );
+    }
+    assert_eq!(
+        tiny_and_big(),
+        (WHITE, WHITE),
+        "levels 1+ not generated yet: incomplete"
+    );
+    tex_level(0, 64, 32, &vec![RED; 64 * 32]);
+    assert_eq!(tiny_and_big(), (RED, RED));
+    sub(BLUE);
+    assert_eq!(tiny_and_big(), (BLUE, BLUE), "TexSubImage regenerates");
+    // SAFETY: a context is current.
+    unsafe { glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 0) };
+    sub(GREEN);
+    assert_eq!(tiny_and_big(), (BLUE, GREEN), "generation off");
+    assert_eq!(err(), GL_NO_ERROR);
+}
+
+#[test]
+fn case_18_paletted_textures_nibbles_levels_and_all_formats() {
+    let gl = Gl::rgba8(8, 8);
+    gl.pixel_ortho();
+    let full = [0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0];
+    gl_texture(1, 1, &[WHITE], GL_REPEAT);
+    let upload = |format: u32, level: i32, w: i32, h: i32, blob: &[u8]| {
+        // SAFETY: a context is current; `blob` holds `len` bytes.
+        unsafe {
+            glCompressedTexImage2D(
+                GL_TEXTURE_2D,
+                level,
+                format,
+                w,
+                h,
+                0,
+                blob.len() as i32,
+                blob.as_ptr().cast(),
+            );
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+        let e = err();
+        gl_tex_quad(0.0, 0.0, 8.0, 8.0, &full, 2);
+        (e, gl.read())
+    };
+    // Entry 0 black-ish and entry 1 a known color, in each entry type's encoding
+    // (16-bit entries in native byte order).
+    let entries: [(u32, Vec<u8>, [u8; 4]); 5] = [
+        (0, vec![255, 0, 0], RED),
+        (1, vec![0, 255, 0, 255], GREEN),
+        (2, 0x001Fu16.to_ne_bytes().to_vec(), BLUE),
+        (3, 0xF00Fu16.to_ne_bytes().to_vec(), RED),
+        (4, 0x07C1u16.to_ne_bytes().to_vec(), GREEN),
+    ];
+    for (bits, base) in [(4usize, GL_PALETTE4_RGB8_OES), (8, GL_PALETTE8_RGB8_OES)] {
+        for (k, entry, want) in &entries {
+            let n = 1usize << bits;
+            let size = entry.len();
+            let mut palette = vec![0u8; n * size];
+            palette[size..2 * size].copy_from_slice(entry);
+            // 2×1 texels: [1, 0]. 4-bit: first texel in the high nibble.
+            let mut blob = palette.clone();
+            blob.extend_from_slice(if bits == 4 { &[0x10][..] } else { &[1, 0] });
+            let (e, px) = upload(base + k, 0, 2, 1, &blob);
+            assert_eq!(e, GL_NO_ERROR, "format {:#x}", base + k);
+            assert_eq!(px[0], *want, "format {:#x}: left texel", base + k);
+            assert_ne!(px[7], *want, "format {:#x}: right texel", base + k);
+            assert!(px[..4].iter().all(|p| p == want) && px[4..8].iter().all(|p| p == &px[7]));
+        }
+    }
+    // A 1×1 level with a 4-bit index: one byte, the high nibble used.
+    let mut blob = vec![0u8; 16 * 3];
+    blob[3..6].copy_from_slice(&[0, 0, 255]);
+    blob.push(0x10);
+    assert_eq!(upload(GL_PALETTE4_RGB8_OES, 0, 1, 1, &blob).1[0], BLUE);
+    // Negative levels: −n gives levels 0 … n in one blob (2×2, 1×1 here: 2 + 1 bytes);
+    // positive levels and a wrong size are INVALID_VALUE.
+    let mut blob = vec![0u8; 16 * 3];
+    blob[3..6].copy_from_slice(&[0, 0, 255]);
+    blob.extend_from_slice(&[0x11, 0x11, 0x10]);
+    let (e, px) = upload(GL_PALETTE4_RGB8_OES, -1, 2, 2, &blob);
+    assert_eq!(e, GL_NO_ERROR);
+    assert!(px.iter().all(|p| *p == BLUE));
+    assert_eq!(
+        upload(GL_PALETTE4_RGB8_OES, 1, 2, 2, &blob).0,
+        GL_INVALID_VALUE
+    );
+    assert_eq!(
+        upload(GL_PALETTE4_RGB8_OES, -1, 2, 2, &blob[..blob.len() - 1]).0,
+        GL_INVALID_VALUE
+    );
+    assert_eq!(
+        upload(GL_PALETTE4_RGB8_OES, -5, 2, 2, &blob).0,
+        GL_INVALID_VALUE
+    );
+}
+
+#[test]
+fn case_19_point_sprites_size_clamps_errors_flipped_t_and_coord_replace() {
+    let gl = Gl::rgba8(32, 32);
+    gl.pixel_ortho();
+    let point = |size: f32| {
+        // SAFETY: a context is current.
+        unsafe {
+            glClear(GL_COLOR_BUFFER_BIT);
+            glPointSize(size);
+        }
+        gl_draw(GL_POINTS, &[16.0, 16.0, 0.0]);
+        let px = gl.read();
+        // Products of the texels on two units may be black.
+        assert_only(&px, &[[0; 4], WHITE, RED, GREEN, BLUE, [0, 0, 0, 255]]);
+        px
+    };
+    // SAFETY: a context is current; arrays hold 3 floats.
+    unsafe {
+        glColor4f(1.0, 1.0, 1.0, 1.0);
+        assert_eq!(gl_covered(&point(4.0)), 16);
+        // Derived sizes are clamped to [SIZE_MIN, SIZE_MAX].
+        glPointParameterf(GL_POINT_SIZE_MAX, 3.0);
+        assert_eq!(gl_covered(&point(10.0)), 9);
+        glPointParameterf(GL_POINT_SIZE_MIN, 6.0);
+        glPointParameterf(GL_POINT_SIZE_MAX, 64.0);
+        assert_eq!(gl_covered(&point(1.0)), 36);
+        // Attenuation with a zero denominator (all coefficients 0), and a negative one:
+        // no crash, no garbage, at most SIZE_MAX wide.
+        for att in [[0.0f32, 0.0, 0.0], [-1.0, 0.0, 0.0]] {
+            glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att.as_ptr());
+            assert_eq!(err(), GL_NO_ERROR);
+            assert!(gl_covered(&point(4.0)) <= 64 * 64);
+        }
+        glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, [1.0f32, 0.0, 0.0].as_ptr());
+        glPointParameterf(GL_POINT_SIZE_MIN, 0.0);
+        glPointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, 8.0);
+        assert_eq!(gl_covered(&point(4.0)), 16, "fade affects alpha only");
+        // Size 0 or negative: INVALID_VALUE, the size unchanged.
+        glPointSize(0.0);
+        assert_eq!(err(), GL_INVALID_VALUE);
+        glPointSize(-2.0);
+        assert_eq!(err(), GL_INVALID_VALUE);
+        let mut size = 0.0f32;
+        glGetFloatv(GL_POINT_SIZE, &mut size);
+        assert_eq!(size, 4.0);
+        // Sprites: s left to right, t from the top down (origin upper left).
+        gl_texture(2, 2, &[RED, GREEN, BLUE, WHITE], GL_CLAMP_TO_EDGE);
+        glEnable(GL_POINT_SPRITE_OES);
+        glTexEnvi(GL_POINT_SPRITE_OES, GL_COORD_REPLACE_OES, 1);
+        let px = point(8.0);
+        let at = |x: usize, y: usize| px[y * 32 + x];
+        // Window rows 12..20; the top row (y = 19) is t ≈ 0: texture row 0.
+        assert_eq!((at(13, 18), at(18, 18)), (RED, GREEN), "top = t 0");
+        assert_eq!((at(13, 13), at(18, 13)), (BLUE, WHITE), "bottom = t 1");
+        // COORD_REPLACE off: the current texture coordinate, constant over the sprite.
+        glTexEnvi(GL_POINT_SPRITE_OES, GL_COORD_REPLACE_OES, 0);
+        glMultiTexCoord4f(GL_TEXTURE0, 0.75, 0.25, 0.0, 1.0);
+        let px = point(8.0);
+        assert!(px.iter().all(|p| *p == [0; 4] || *p == GREEN));
+        // COORD_REPLACE on unit 0 only: unit 1 keeps its constant coordinate.
+        glTexEnvi(GL_POINT_SPRITE_OES, GL_COORD_REPLACE_OES, 1);
+        glActiveTexture(GL_TEXTURE1);
+        gl_texture(2, 1, &[RED, WHITE], GL_CLAMP_TO_EDGE);
+        glMultiTexCoord4f(GL_TEXTURE1, 0.75, 0.5, 0.0, 1.0);
+        let px = point(8.0);
+        assert_eq!((px[18 * 32 + 13], px[13 * 32 + 18]), (RED, WHITE));
+        glMultiTexCoord4f(GL_TEXTURE1, 0.25, 0.5, 0.0, 1.0);
+        let px = point(8.0);
+        assert_eq!((px[18 * 32 + 13], px[13 * 32 + 18]), (RED, RED));
+        glDisable(GL_TEXTURE_2D);
+        glActiveTexture(GL_TEXTURE0);
+        glDisable(GL_TEXTURE_2D);
+        glDisable(GL_POINT_SPRITE_OES);
+    }
+}
+
+#[test]
+fn case_21_quantized_byte_and_short_meshes_meet_without_cracks() {
+    // A byte quad 0..8 scaled by 2 and a short quad 16..32 at scale 1 share the edge
+    // x = 16; additive blending shows any pixel covered twice or not at all.
+    let mut s = pixel_state(32, 16);
+    s.blend = Some(Blend::func(BlendFactor::One, BlendFactor::One));
+    let mut t = target(32, 16);
+    let bq: [i8; 18] = [0, 0, 0, 8, 0, 0, 8, 8, 0, 0, 0, 0, 8, 8, 0, 0, 8, 0];
+    let sq: [i16; 18] = [
+        16, 0, 0, 32, 0, 0, 32, 16, 0, 16, 0, 0, 32, 16, 0, 16, 16, 0,
+    ];
+    let col = bytes(&rgba([0.5, 0.5, 0.5, 0.5], 6));
+    for (data, ty, scale) in [
+        (bytes(&bq), ComponentType::Byte, 2.0),
+        (bytes(&sq), ComponentType::Short, 1.0),
+    ] {
+        s.modelview = Mat4::from_scale(Vec3::new(scale, scale, 1.0));
+        let mut d = DrawCall::new(
+            Primitive::Triangles,
+            Indices::Range { first: 0, count: 6 },
+            array(&data, ty, 3),
+        );
+        d.color = AttribSource::Array(array(&col, ComponentType::Float, 4));
+        core::render(&s, &d, &mut t).unwrap();
+    }
+    for y in 0..16 {
+        for x in 0..32 {
+            assert_eq!(t.pixel(x, y)[0], 128, "({x}, {y}) covered once");
+        }
+    }
+    // M3G: morph results beyond the 8-bit range are undefined, but finite and no error.
+    use GLES_CM::m3g::{MorphingMesh, TriangleStripArray, VertexArray, VertexBuffer};
+    let vb = |v: i8| {
+        let a = VertexArray::new(3, 3, 1).unwrap();
+        a.set_bytes(0, 3, &[v, 0, 0, 0, v, 0, 0, 0, v]).unwrap();
+        let b = VertexBuffer::new();
+        b.set_positions(Some(&a), 1.0, None).unwrap();
+        b
+    };
+    let ib = TriangleStripArray::new_implicit(0, &[3])
+        .unwrap()
+        .as_index_buffer();
+    let m = MorphingMesh::new(&vb(100), &[vb(127), vb(-128)], &ib, None).unwrap();
+    m.set_weights(&[3.0, -2.0]).unwrap();
+    let out = m.morphed_vertex_buffer().unwrap();
+    let (_, sb) = out.get_positions();
+    assert!(sb.iter().all(|x| x.is_finite()), "{sb:?}");
+}
+
+#[test]
+fn case_24_read_pixels_alignment_outside_regions_and_565_expansion() {
+    let gl = Gl::rgba8(8, 8);
+    gl.pixel_ortho();
+    // SAFETY: a context is current; every buffer is large enough for the read.
+    unsafe {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, 3, 8);
+        glClearColor(1.0, 0.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        // Odd widths (3 RGBA pixels = 12 bytes per row) at every alignment: rows padded
+        // to the alignment, padding left untouched.
+        for align in [1usize, 2, 4, 8] {
+            glPixelStorei(GL_PACK_ALIGNMENT, align as i32);
+            let stride = 12usize.div_ceil(align) * align;
+            let mut buf = vec![0xABu8; stride * 3];
+            glReadPixels(
+                1,
+                1,
+                3,
+                3,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                buf.as_mut_ptr().cast(),
+            );
+            assert_eq!(err(), GL_NO_ERROR);
+            for row in 0..3 {
+                let r = &buf[row * stride..];
+                assert_eq!(
+                    r[..12],
+                    [255, 0, 0, 255, 255, 0, 0, 255, 0, 0, 0, 0],
+                    "{align}"
+                );
+                if row < 2 {
+                    assert!(r[12..stride].iter().all(|&b| b == 0xAB), "padding {align}");
+                }
+            }
+        }
+        // A region partly outside: the pixels outside are left as they were (documented).
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        let mut buf = vec![[7u8; 4]; 16];
+        glReadPixels(
+            -2,
+            -2,
+            4,
+            4,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            buf.as_mut_ptr().cast(),
+        );
+        assert_eq!(err(), GL_NO_ERROR);
+        for (i, p) in buf.iter().enumerate() {
+            let inside = i / 4 >= 2 && i % 4 >= 2;
+            assert_eq!(*p, if inside { RED } else { [7; 4] }, "{i}");
+        }
+        // The implementation read format works too.
+        let (mut f, mut t) = (0, 0);
+        glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES, &mut f);
+        glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_TYPE_OES, &mut t);
+        let mut any = vec![0u8; 8 * 8 * 4];
+        glReadPixels(0, 0, 8, 8, f as u32, t as u32, any.as_mut_ptr().cast());
+        assert_eq!(err(), GL_NO_ERROR);
+    }
+}
+
+#[test]
+fn case_24_read_pixels_565_to_8888_expansion_is_exact() {
+    // RGB565 → RGBA8888: c / (2ⁿ − 1) rounded to 8 bits, exactly, for every level.
+    let gl = Gl::new(32, 2, 5, 16, 0);
+    gl.pixel_ortho();
+    // SAFETY: a context is current.
+    unsafe { glEnable(GL_SCISSOR_TEST) };
+    for x in 0..32 {
+        let v = x as f32 / 31.0;
+        // SAFETY: a context is current.
+        unsafe {
+            glScissor(x, 0, 1, 2);
+            glClearColor(v, x as f32 * 2.0 / 63.0, v, 1.0);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+    }
+    // SAFETY: a context is current.
+    unsafe { glDisable(GL_SCISSOR_TEST) };
+    let px = gl.read();
+    for (x, p) in px.iter().take(32).enumerate() {
+        let r = ((x as f64) * 255.0 / 31.0).round() as u8;
+        let g = ((2 * x) as f64 * 255.0 / 63.0).round() as u8;
+        assert_eq!(*p, [r, g, r, 255], "level {x}");
+    }
+}
+
+#[test]
+fn case_25_get_conversions_rounding_normalization_saturation_and_float_bits() {
+    let _gl = Gl::rgba8(4, 4);
+    // SAFETY: a context is current; outputs hold 16 values.
+    unsafe {
+        let mut i = [0i32; 16];
+        let mut x = [0i32; 16];
+        glPointSize(2.4);
+        glGetIntegerv(GL_POINT_SIZE, i.as_mut_ptr());
+        assert_eq!(i[0], 2);
+        glPointSize(2.6);
+        glGetIntegerv(GL_POINT_SIZE, i.as_mut_ptr());
+        assert_eq!(i[0], 3, "float → int rounds to nearest");
+        // Colors and normals map [−1, 1] onto the whole integer range.
+        glClearColor(1.0, 0.0, 0.5, 1.0);
+        glGetIntegerv(GL_COLOR_CLEAR_VALUE, i.as_mut_ptr());
+        // (c·(2³² − 1) − 1) / 2: 0.5 gives 2³⁰ − 1.
+        assert_eq!(i[..4], [i32::MAX, 0, (1 << 30) - 1, i32::MAX]);
+        glNormal3f(1.0, -1.0, 0.0);
+        glGetIntegerv(GL_CURRENT_NORMAL, i.as_mut_ptr());
+        assert_eq!(i[..3], [i32::MAX, i32::MIN, 0]);
+        // Saturation on overflow, integer and fixed.
+        glFogf(GL_FOG_END, 1e20);
+        glGetIntegerv(GL_FOG_END, i.as_mut_ptr());
+        assert_eq!(i[0], i32::MAX);
+        glGetFixedv(GL_FOG_END, x.as_mut_ptr());
+        assert_eq!(x[0], i32::MAX);
+        glFogf(GL_FOG_END, -1e20);
+        glGetFixedv(GL_FOG_END, x.as_mut_ptr());
+        assert_eq!(x[0], i32::MIN);
+        let mut b = [9u8; 4];
+        glGetBooleanv(GL_FOG_END, b.as_mut_ptr());
+        assert_eq!(b[0], 1);
+        // The matrix as FLOAT_AS_INT_BITS: the float's bits, unconverted.
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glScalef(0.1, -3.5, 1e30);
+        use GLES_CM::gles::tokens_ext::GL_MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES;
+        glGetIntegerv(GL_MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES, i.as_mut_ptr());
+        assert_eq!(i[0], 0.1f32.to_bits() as i32);
+        assert_eq!(i[5], (-3.5f32).to_bits() as i32);
+        assert_eq!(i[10], 1e30f32.to_bits() as i32);
+        assert_eq!(i[15], 1.0f32.to_bits() as i32);
+        assert_eq!(err(), GL_NO_ERROR);
+    }
+}
+
+#[test]
+fn case_26_skinning_precision_palette_indices_and_weights() {
+    use GLES_CM::m3g::*;
+    // A chain of 32 bones, each 1 unit along its parent's x and rotated 10° about z: the
+    // tip vertex against an f64 evaluation of the compounded matrices.
+    const N: usize = 32;
+    let va = VertexArray::new(3, 3, 2).unwrap();
+    va.set_shorts(0, 3, &[0, 0, 0, N as i16, 0, 0, N as i16 - 1, 1, 0])
+        .unwrap();
+    let vb = VertexBuffer::new();
+    vb.set_positions(Some(&va), 1.0, None).unwrap();
+    let ib = TriangleStripArray::new_implicit(0, &[3])
+        .unwrap()
+        .as_index_buffer();
+    let skeleton = Group::new();
+    let mut bones = vec![Group::new()];
+    skeleton.add_child(&bones[0]).unwrap();
+    for _ in 1..N {
+        let b = Group::new();
+        b.set_translation(1.0, 0.0, 0.0);
+        bones.last().unwrap().add_child(&b).unwrap();
+        bones.push(b);
+    }
+    let m = SkinnedMesh::new(&vb, &ib, None, &skeleton).unwrap();
+    m.add_transform(&bones[N - 1].as_node(), 1, 1, 2).unwrap();
+    m.add_transform(&bones[0].as_node(), 1, 0, 1).unwrap();
+    for b in &bones {
+        b.set_orientation(10.0, 0.0, 0.0, 1.0).unwrap();
+    }
+    let (p, _) = m.skinned_vertices().unwrap();
+    let a = 10f64.to_radians();
+    let tip = |local: [f64; 2]| {
+        let mut v = local;
+        for i in (0..N).rev() {
+            v = [
+                v[0] * a.cos() - v[1] * a.sin(),
+                v[0] * a.sin() + v[1] * a.cos(),
+            ];
+            if i > 0 {
+                v[0] += 1.0;
+            }
+        }
+        v
+    };
+    for (k, local) in [(1, [1.0, 0.0]), (2, [0.0, 1.0])] {
+        let want = tip(local);
+        assert!(
+            (p[k][0] as f64 - want[0]).abs() < 1e-3 && (p[k][1] as f64 - want[1]).abs() < 1e-3,
+            "vertex {k}: {:?} vs {want:?}",
+            p[k]
+        );
+    }
+    // M3G weights that do not sum to 1 are normalized: 1 : 3 is ¼ : ¾.
+    let (vb2, ib2) = (vb.clone(), ib.clone());
+    let skel = Group::new();
+    let (b0, b1) = (Group::new(), Group::new());
+    skel.add_child(&b0).unwrap();
+    skel.add_child(&b1).unwrap();
+    let m = SkinnedMesh::new(&vb2, &ib2, None, &skel).unwrap();
+    m.add_transform(&b0.as_node(), 1, 0, 3).unwrap();
+    m.add_transform(&b1.as_node(), 3, 0, 3).unwrap();
+    b1.set_translation(0.0, 4.0, 0.0);
+    let (p, _) = m.skinned_vertices().unwrap();
+    assert!((p[0][1] - 3.0).abs() < 1e-4, "{:?}", p[0]);
+    // GL matrix palette: an index at MAX_PALETTE_MATRICES is INVALID_VALUE; in an index
+    // array it contributes nothing (documented in core::vertex); weights are used as given.
+    let _gl = Gl::rgba8(4, 4);
+    let mut max = 0;
+    // SAFETY: a context is current.
+    unsafe {
+        use GLES_CM::gles::tokens_ext::GL_MAX_PALETTE_MATRICES_OES;
+        glGetIntegerv(GL_MAX_PALETTE_MATRICES_OES, &mut max);
+        assert!(max >= 9);
+        glCurrentPaletteMatrixOES(max as u32);
+        assert_eq!(err(), GL_INVALID_VALUE);
+        glCurrentPaletteMatrixOES(max as u32 - 1);
+        assert_eq!(err(), GL_NO_ERROR);
+    }
+    let mut s = RenderState::new(8, 8);
+    s.matrix_palette = Some(vec![Mat4::from_translation(Vec3::X); max as usize]);
+    let pos = bytes(&[0.0f32; 3]);
+    let idx = [0u8, max as u8, 0, 255];
+    let w = bytes(&[0.5f32, 0.25, 0.3, 0.3]);
+    let mut d = DrawCall::new(
+        Primitive::Points,
+        Indices::Range { first: 0, count: 2 },
+        array(&pos, ComponentType::Float, 3),
+    );
+    d.position.stride = 0;
+    d.matrix_index = Some(array(&idx, ComponentType::UnsignedByte, 2));
+    d.weight = Some(array(&w, ComponentType::Float, 2));
+    let v = core::vertex::run(&s, &d).unwrap();
+    assert_eq!(v[0].eye, Vec3::new(0.5, 0.0, 0.0));
+    assert_eq!(v[1].eye, Vec3::new(0.3, 0.0, 0.0));
+}
+
+#[test]
+fn case_27_quaternion_slerp_small_angles_and_the_4d_path() {
+    use GLES_CM::m3g::KeyframeSequence as KS;
+    let q = |deg: f64| {
+        let h = (deg * 0.5).to_radians();
+        [0.0, 0.0, h.sin() as f32, h.cos() as f32]
+    };
+    let seq = |a: [f32; 4], b: [f32; 4]| {
+        let s = KS::new(2, 4, KS::SLERP).unwrap();
+        s.set_keyframe(0, 0, &a).unwrap();
+        s.set_keyframe(1, 100, &b).unwrap();
+        s.set_duration(100).unwrap();
+        s
+    };
+    // θ → 0: sin θ ≈ 0 in the denominator; the result stays finite and unit.
+    for tiny in [1e-3, 1e-6, 0.0] {
+        let s = seq(q(30.0), q(30.0 + tiny));
+        for t in [0.0, 25.0, 50.0, 99.0] {
+            let v = s.sample(t).unwrap();
+            let n: f32 = v.iter().map(|c| c * c).sum();
+            assert!(
+                v.iter().all(|c| c.is_finite()) && (n - 1.0).abs() < 1e-5,
+                "{v:?}"
+            );
+            assert!((v[2] - q(30.0)[2]).abs() < 1e-4, "{v:?}");
+        }
+    }
+    // q vs −q: the 4D path, no sign flip. Identity → 200° about z (4D angle 100°): the
+    // midpoint is 100°, not −80°.
+    let v = seq(q(0.0), q(200.0)).sample(50.0).unwrap();
+    let want = q(100.0);
+    for c in 0..4 {
+        assert!((v[c] - want[c]).abs() < 1e-5, "{v:?} vs {want:?}");
+    }
+    // Adjacent keys under 180° (4D angle < 90°): the short way.
+    let v = seq(q(0.0), q(170.0)).sample(50.0).unwrap();
+    assert!((v[2] - q(85.0)[2]).abs() < 1e-5, "{v:?}");
+}
+
+#[test]
+fn case_28_m3g_non_invertible_camera_and_node_transforms() {
+    use GLES_CM::m3g::*;
+    let ae = |r: Result<()>| matches!(r, Err(M3gError::Arithmetic(_)));
+    // A singular camera transform: setCamera and render(World) throw ArithmeticException.
+    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let mut g = Graphics3D::new();
+    g.bind_image(&img, true, 0).unwrap();
+    let mut singular = Transform::new();
+    singular.post_scale(1.0, 0.0, 1.0);
+    assert!(ae(g.set_camera(Some(&Camera::new()), Some(&singular))));
+    let w = World::new();
+    let c = Camera::new();
+    let holder = Group::new();
+    holder.add_child(&c).unwrap();
+    w.add_child(&holder).unwrap();
+    w.set_active_camera(&c);
+    holder.set_scale(1.0, 1.0, 0.0);
+    assert!(ae(g.render_world(&w)), "singular path to the camera");
+    holder.set_scale(1.0, 1.0, 1.0);
+    assert!(g.render_world(&w).is_ok());
+    g.release_target();
+    // getTransformTo across a singular path: from a node below a zero scale to one
+    // outside it needs the inverse — ArithmeticException; the other way round is fine.
+    let a = Group::new();
+    let b = Group::new();
+    holder.add_child(&a).unwrap();
+    w.add_child(&b).unwrap();
+    holder.set_scale(0.0, 1.0, 1.0);
+    assert!(matches!(
+        b.get_transform_to(&a),
+        Err(M3gError::Arithmetic(_))
+    ));
+    let t = a.get_transform_to(&b).unwrap().unwrap();
+    assert!(t.get().iter().all(|x| x.is_finite()));
 }

@@ -801,7 +801,7 @@ fn stencil_write(op: StencilOp, stored: u8, reference: u8, writemask: u8) -> u8 
 }
 
 /// The stored color as values in [0, 1]: each channel's n-bit value over 2ⁿ − 1, exactly
-/// (not the replicated 8-bit byte over 255); 1 for a missing alpha.
+/// (not the widened 8-bit byte over 255); 1 for a missing alpha.
 #[inline(always)]
 fn decode(format: ColorFormat, word: u32) -> [f32; 4] {
     const INV_255: f32 = 1.0 / 255.0;

@@ -4,7 +4,8 @@
 //! Rows are stored bottom-up (row 0 is window y = 0), as GL addresses them, so `glReadPixels`
 //! is a row copy. Color is always stored as RGBA8 words (`[r, g, b, a]` bytes in memory), but
 //! every stored value is exactly representable in the target's format: RGB565 values are
-//! quantized on write and expanded by bit replication, and formats without alpha keep 255.
+//! quantized on write and widened to 8 bits as round(v · 255 / (2ⁿ − 1)), and formats without
+//! alpha keep 255.
 //! One storage layout means one set of span routines; the format only changes the quantizer.
 
 /// The color formats a target can have.
@@ -81,16 +82,17 @@ pub fn unorm(c: f32, bits: u32) -> u32 {
     (c * max + 0.5) as u32
 }
 
-/// Widens an n-bit unsigned normalized value to 8 bits by bit replication, which maps
-/// 0 → 0 and 2ⁿ − 1 → 255.
+/// Widens an n-bit unsigned normalized value to 8 bits as `round(v · 255 / (2ⁿ − 1))`, the
+/// conversion ES 1.1 §4.3.1 gives for reading pixels (bit replication is off by one for some
+/// values, e.g. 3 of 31). The n-bit value is still the byte's top n bits, so it can be
+/// recovered by a shift.
 pub fn expand_to_8(v: u32, bits: u32) -> u8 {
     match bits {
         8 => v as u8,
-        5 => ((v << 3) | (v >> 2)) as u8,
-        6 => ((v << 2) | (v >> 4)) as u8,
-        4 => ((v << 4) | v) as u8,
-        1 => (v * 255) as u8,
-        n => ((v * 255 + ((1 << n) - 1) / 2) / ((1 << n) - 1)) as u8,
+        n => {
+            let max = (1u32 << n) - 1;
+            ((v * 255 + max / 2) / max) as u8
+        }
     }
 }
 

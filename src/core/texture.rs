@@ -5,7 +5,7 @@
 //! Every level keeps its base format (what GL reports and what texture environments combine
 //! with) and its texels expanded to RGBA8 words (`[r, g, b, a]` bytes, little-endian `u32`,
 //! as [`super::Target`] stores color): L → (L, L, L, 255), A → (0, 0, 0, A),
-//! LA → (L, L, L, A), RGB → (R, G, B, 255). Packed 16-bit types widen by bit replication
+//! LA → (L, L, L, A), RGB → (R, G, B, 255). Packed 16-bit types widen as round(v · 255 / (2ⁿ − 1))
 //! ([`super::target::expand_to_8`]), so 5-bit 31 is 255 and 4-bit 8 is 0x88. Row 0 is the
 //! first row the application gave (t = 0).
 
@@ -1114,6 +1114,12 @@ const ETC1_MODIFIERS: [[i32; 2]; 8] = [
     [47, 183],
 ];
 
+/// ETC1 widens its 5-bit base colors by bit replication (the format's own rule, which differs
+/// from GL's rounding conversion for some values).
+fn etc1_widen5(v: u32) -> i32 {
+    ((v << 3) | (v >> 2)) as i32
+}
+
 /// Decodes one 64-bit ETC1 block (read big-endian) into 16 RGB texels, `out[y * 4 + x]`.
 pub fn etc1_block(block: [u8; 8]) -> [[u8; 3]; 16] {
     let hi = u32::from_be_bytes([block[0], block[1], block[2], block[3]]);
@@ -1130,8 +1136,8 @@ pub fn etc1_block(block: [u8; 8]) -> [[u8; 3]; 16] {
             let d = ((hi >> shift) & 7) as i32;
             let d = if d >= 4 { d - 8 } else { d };
             let b2 = (b1 as i32 + d) & 31;
-            base[0][c] = expand_to_8(b1, 5) as i32;
-            base[1][c] = expand_to_8(b2 as u32, 5) as i32;
+            base[0][c] = etc1_widen5(b1);
+            base[1][c] = etc1_widen5(b2 as u32);
         } else {
             base[0][c] = expand_to_8((hi >> (shift + 4)) & 15, 4) as i32;
             base[1][c] = expand_to_8((hi >> shift) & 15, 4) as i32;
@@ -1254,7 +1260,7 @@ mod tests {
         b[..4].copy_from_slice(&hi.to_be_bytes());
         b[4..].copy_from_slice(&0u32.to_be_bytes());
         let px = etc1_block(b);
-        let e = |v: u32| expand_to_8(v, 5) as i32 + 2;
+        let e = |v: u32| etc1_widen5(v) + 2;
         assert_eq!(px[0], [e(16) as u8, e(8) as u8, e(4) as u8]);
         assert_eq!(px[3 * 4 + 3], [e(15) as u8, e(11) as u8, e(4) as u8]);
         // Sizes: partial blocks count whole; a 2 × 2 image keeps its top-left texels.
