@@ -2244,3 +2244,192 @@ fn case_28_m3g_non_invertible_camera_and_node_transforms() {
     let t = a.get_transform_to(&b).unwrap().unwrap();
     assert!(t.get().iter().all(|x| x.is_finite()));
 }
+
+/// Case 30, EGL: swap then read, the default 0 × 0 pbuffer, LARGEST_PBUFFER, binding a
+/// pbuffer as a texture while rendering to it, deleting a shared texture another context is
+/// drawing with, destroying a current surface and context (freed when released), and one
+/// context made current from two threads. Documented behavior where EGL leaves room: swaps
+/// preserve the buffer (EGL_BUFFER_PRESERVED), and binding the current draw surface first
+/// finishes its rendering, so the texture holds what was drawn so far.
+#[test]
+fn case_30_egl_surfaces_contexts_and_threads() {
+    use GLES_CM::gles::ffi as gl;
+    let g = Gl::rgba8(8, 8);
+    let (dpy, cfg) = (g.dpy, config(g.dpy, 8, 24, 8));
+    let query = |s: EGLSurface, attr: EGLint| -> EGLint {
+        let mut v = -1;
+        // SAFETY: `v` is one writable EGLint.
+        unsafe { eglQuerySurface(dpy, s, attr, &mut v) };
+        v
+    };
+
+    // Swap, then read: the pbuffer keeps its contents.
+    g.pixel_ortho();
+    // SAFETY: a context is current.
+    unsafe {
+        glClearColor(0.0, 1.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    assert_eq!(eglSwapBuffers(dpy, g.surface), 1);
+    assert!(g.read().iter().all(|&p| p == GREEN));
+
+    // The default pbuffer is 0 × 0: current, drawn to and read from without harm.
+    // SAFETY: the attribute list ends in EGL_NONE.
+    let empty = unsafe { eglCreatePbufferSurface(dpy, cfg, [EGL_NONE].as_ptr()) };
+    assert!(!empty.is_null());
+    assert_eq!((query(empty, EGL_WIDTH), query(empty, EGL_HEIGHT)), (0, 0));
+    assert_eq!(eglMakeCurrent(dpy, empty, empty, g.context), 1);
+    let mut px = [7u8; 4];
+    // SAFETY: a context is current; `px` has room for the (empty) read.
+    unsafe {
+        glClear(GL_COLOR_BUFFER_BIT);
+        gl_draw(GL_TRIANGLES, &[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
+        glReadPixels(
+            0,
+            0,
+            1,
+            1,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            px.as_mut_ptr().cast(),
+        );
+    }
+    assert_eq!(err(), GL_NO_ERROR);
+
+    // LARGEST_PBUFFER: an oversized request is clamped to the largest size instead of failing.
+    let big = [
+        EGL_WIDTH,
+        1 << 20,
+        EGL_HEIGHT,
+        16,
+        EGL_LARGEST_PBUFFER,
+        EGL_TRUE as EGLint,
+        EGL_NONE,
+    ];
+    // SAFETY: the attribute list ends in EGL_NONE.
+    let largest = unsafe { eglCreatePbufferSurface(dpy, cfg, big.as_ptr()) };
+    assert!(!largest.is_null());
+    let w = query(largest, EGL_WIDTH);
+    assert!(
+        w > 0 && w < 1 << 20 && query(largest, EGL_HEIGHT) == 16,
+        "{w}"
+    );
+    assert_eq!(eglDestroySurface(dpy, largest), 1);
+
+    // Binding the current draw surface as a texture: the rendering so far is finished first.
+    let tex_attrs = [
+        EGL_WIDTH,
+        4,
+        EGL_HEIGHT,
+        4,
+        EGL_TEXTURE_FORMAT,
+        EGL_TEXTURE_RGBA,
+        EGL_TEXTURE_TARGET,
+        EGL_TEXTURE_2D,
+        EGL_NONE,
+    ];
+    // SAFETY: the attribute list ends in EGL_NONE.
+    let tex_surface = unsafe { eglCreatePbufferSurface(dpy, cfg, tex_attrs.as_ptr()) };
+    assert!(!tex_surface.is_null());
+    assert_eq!(eglMakeCurrent(dpy, tex_surface, tex_surface, g.context), 1);
+    let mut tex = 0u32;
+    // SAFETY: a context is current; `tex` receives one name.
+    unsafe {
+        glClearColor(1.0, 0.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glGenTextures(1, &mut tex);
+        glBindTexture(GL_TEXTURE_2D, tex);
+    }
+    assert_eq!(eglBindTexImage(dpy, tex_surface, EGL_BACK_BUFFER), 1);
+    assert_eq!(eglReleaseTexImage(dpy, tex_surface, EGL_BACK_BUFFER), 1);
+
+    // A second context sharing objects deletes the texture the first one is drawing with;
+    // the first one's pending and later draws neither crash nor read freed memory.
+    assert_eq!(eglMakeCurrent(dpy, g.surface, g.surface, g.context), 1);
+    // SAFETY: a context is current; the texel array holds 2 × 2 RGBA bytes.
+    unsafe {
+        glBindTexture(GL_TEXTURE_2D, tex);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        let texels = [BLUE; 4];
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as i32,
+            2,
+            2,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            texels.as_ptr().cast(),
+        );
+        glEnable(GL_TEXTURE_2D);
+        gl::glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    }
+    g.pixel_ortho();
+    let quad = [0.0, 0.0, 0.0, 8.0, 0.0, 0.0, 0.0, 8.0, 0.0, 8.0, 8.0, 0.0];
+    // Lives until the last draw that reads it, at the end of this test.
+    let uv = [0.0f32, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+    // SAFETY: a context is current; `uv` outlives every draw reading it.
+    unsafe {
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glTexCoordPointer(2, GL_FLOAT, 0, uv.as_ptr().cast());
+        gl_draw(GL_TRIANGLE_STRIP, &quad);
+    }
+    // SAFETY: the share context is valid.
+    let other = unsafe { eglCreateContext(dpy, cfg, g.context, null()) };
+    assert!(!other.is_null());
+    // Handles cross threads as integers (the raw pointers are not Send).
+    let (d2, o2) = (dpy as usize, other as usize);
+    let t2 = std::thread::spawn(move || {
+        let (dpy, other) = (d2 as EGLDisplay, o2 as EGLContext);
+        // SAFETY: 0 × 0 pbuffer attribute list ends in EGL_NONE; `tex` names one texture.
+        unsafe {
+            let s = eglCreatePbufferSurface(dpy, config(dpy, 8, 24, 8), [EGL_NONE].as_ptr());
+            assert_eq!(eglMakeCurrent(dpy, s, s, other), 1);
+            gl::glDeleteTextures(1, &tex);
+            glFinish();
+            eglMakeCurrent(dpy, null_mut(), null_mut(), null_mut());
+            eglDestroySurface(dpy, s);
+        }
+    });
+    t2.join().unwrap();
+    gl_draw(GL_TRIANGLE_STRIP, &quad);
+    let px = g.read();
+    assert!(
+        px.iter().all(|&p| p == BLUE || p == WHITE),
+        "{:?}",
+        &px[..4]
+    );
+
+    // One context current on two threads: the second gets EGL_BAD_ACCESS.
+    let (d, c) = (dpy as usize, g.context as usize);
+    let t3 = std::thread::spawn(move || {
+        let (dpy, ctx) = (d as EGLDisplay, c as EGLContext);
+        // SAFETY: the attribute list ends in EGL_NONE.
+        let s = unsafe { eglCreatePbufferSurface(dpy, config(dpy, 8, 24, 8), [EGL_NONE].as_ptr()) };
+        let made = eglMakeCurrent(dpy, s, s, ctx);
+        let error = eglGetError();
+        eglDestroySurface(dpy, s);
+        (made, error)
+    });
+    assert_eq!(t3.join().unwrap(), (0, EGL_BAD_ACCESS));
+
+    // Destroying a current surface and context defers the free until they are released.
+    // SAFETY: the share context is valid.
+    let spare_ctx = unsafe { eglCreateContext(dpy, cfg, null_mut(), null()) };
+    assert_eq!(eglMakeCurrent(dpy, empty, empty, spare_ctx), 1);
+    assert_eq!(eglDestroySurface(dpy, empty), 1);
+    assert_eq!(eglDestroyContext(dpy, spare_ctx), 1);
+    // SAFETY: a context is still current.
+    unsafe { glClear(GL_COLOR_BUFFER_BIT) };
+    assert_eq!(err(), GL_NO_ERROR);
+    assert_eq!(eglMakeCurrent(dpy, g.surface, g.surface, g.context), 1);
+    assert_eq!(
+        query(empty, EGL_WIDTH),
+        -1,
+        "the destroyed surface is gone after release"
+    );
+    assert_eq!(eglGetError(), EGL_BAD_SURFACE);
+    assert_eq!(eglDestroySurface(dpy, tex_surface), 1);
+    assert_eq!(eglDestroyContext(dpy, other), 1);
+}
