@@ -339,7 +339,13 @@ fn main() -> ExitCode {
         }
     };
     let dir = exe.parent().unwrap_or(Path::new("."));
-    let ours = dir.join("libGLES_CM.so");
+    // cargo rebuilds the library in `deps/` whenever it builds this program; the copy beside
+    // it is only refreshed by `cargo build`, so prefer the one in `deps/`.
+    let ours = [dir.join("deps"), dir.to_path_buf()]
+        .into_iter()
+        .map(|d| d.join("libGLES_CM.so"))
+        .find(|p| p.exists())
+        .unwrap_or_else(|| dir.join("libGLES_CM.so"));
     if !ours.exists() {
         eprintln!(
             "{} is missing: build it with `cargo build --release` (cargo run --release --bin bench does)",

@@ -218,8 +218,14 @@ fn main() -> ExitCode {
     }
     // target/release/showcase: the library is beside it, the images go to target/showcase.
     let exe = std::env::current_exe().expect("current_exe");
-    let lib_dir = exe.parent().expect("the showcase's folder").to_path_buf();
-    let out = lib_dir
+    let bin_dir = exe.parent().expect("the showcase's folder").to_path_buf();
+    // cargo rebuilds the library in `deps/` whenever it builds this program; the copy beside
+    // it is only refreshed by `cargo build`, so prefer the one in `deps/`.
+    let lib_dir = [bin_dir.join("deps"), bin_dir.clone()]
+        .into_iter()
+        .find(|d| d.join("libGLES_CM.so").exists())
+        .unwrap_or_else(|| bin_dir.clone());
+    let out = bin_dir
         .parent()
         .map_or_else(|| PathBuf::from("showcase"), |t| t.join("showcase"));
     std::fs::create_dir_all(&out).expect("create the output folder");
