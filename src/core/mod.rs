@@ -119,6 +119,40 @@ mod tests {
         )
     }
 
+    /// The bytes of `v`, as a client array holds them.
+    fn bytes(v: &[f32]) -> Vec<u8> {
+        v.iter().flat_map(|x| x.to_ne_bytes()).collect()
+    }
+
+    /// `count` vertices of float x, y, z from `pb`, every other input at its default.
+    fn positions_call(prim: Primitive, pb: &[u8], count: usize) -> DrawCall<'_> {
+        DrawCall::new(
+            prim,
+            Indices::Range { first: 0, count },
+            AttribArray {
+                data: pb,
+                ty: ComponentType::Float,
+                size: 3,
+                stride: 12,
+                normalized: false,
+            },
+        )
+    }
+
+    /// As [`positions_call`], with float RGBA colors from `cb`.
+    fn colored_call<'a>(prim: Primitive, pb: &'a [u8], cb: &'a [u8], count: usize) -> DrawCall<'a> {
+        DrawCall {
+            color: AttribSource::Array(AttribArray {
+                data: cb,
+                ty: ComponentType::Float,
+                size: 4,
+                stride: 16,
+                normalized: false,
+            }),
+            ..positions_call(prim, pb, count)
+        }
+    }
+
     /// A state whose projection maps object x, y straight to window pixels.
     fn pixel_state(w: i32, h: i32) -> RenderState {
         let mut s = RenderState::new(w, h);
@@ -127,23 +161,10 @@ mod tests {
     }
 
     fn draw(state: &RenderState, t: &mut Target, xyz: &[f32], color: [f32; 4], prim: Primitive) {
-        let bytes: Vec<u8> = xyz.iter().flat_map(|v| v.to_ne_bytes()).collect();
+        let pb = bytes(&xyz);
         let call = DrawCall {
             color: AttribSource::Constant(color),
-            ..DrawCall::new(
-                prim,
-                Indices::Range {
-                    first: 0,
-                    count: xyz.len() / 3,
-                },
-                AttribArray {
-                    data: &bytes,
-                    ty: ComponentType::Float,
-                    size: 3,
-                    stride: 12,
-                    normalized: false,
-                },
-            )
+            ..positions_call(prim, &pb, xyz.len() / 3)
         };
         render(state, &call, t).unwrap();
     }
@@ -284,28 +305,9 @@ mod tests {
                 ]);
                 col.extend([rng.next(), rng.next(), rng.next(), 1.0]);
             }
-            let pb: Vec<u8> = pos.iter().flat_map(|v| v.to_ne_bytes()).collect();
-            let cb: Vec<u8> = col.iter().flat_map(|v| v.to_ne_bytes()).collect();
-            let call = DrawCall {
-                color: AttribSource::Array(AttribArray {
-                    data: &cb,
-                    ty: ComponentType::Float,
-                    size: 4,
-                    stride: 16,
-                    normalized: false,
-                }),
-                ..DrawCall::new(
-                    Primitive::Triangles,
-                    Indices::Range { first: 0, count: 3 },
-                    AttribArray {
-                        data: &pb,
-                        ty: ComponentType::Float,
-                        size: 3,
-                        stride: 12,
-                        normalized: false,
-                    },
-                )
-            };
+            let pb = bytes(&pos);
+            let cb = bytes(&col);
+            let call = colored_call(Primitive::Triangles, &pb, &cb, 3);
             render(&s, &call, &mut fast).unwrap();
             reference::render(&s, &call, &mut slow);
         }
@@ -335,31 +337,9 @@ mod tests {
             ]);
             col.extend([rng.next(), rng.next(), rng.next(), 1.0]);
         }
-        let pb: Vec<u8> = pos.iter().flat_map(|v| v.to_ne_bytes()).collect();
-        let cb: Vec<u8> = col.iter().flat_map(|v| v.to_ne_bytes()).collect();
-        let call = DrawCall {
-            color: AttribSource::Array(AttribArray {
-                data: &cb,
-                ty: ComponentType::Float,
-                size: 4,
-                stride: 16,
-                normalized: false,
-            }),
-            ..DrawCall::new(
-                Primitive::Triangles,
-                Indices::Range {
-                    first: 0,
-                    count: 300,
-                },
-                AttribArray {
-                    data: &pb,
-                    ty: ComponentType::Float,
-                    size: 3,
-                    stride: 12,
-                    normalized: false,
-                },
-            )
-        };
+        let pb = bytes(&pos);
+        let cb = bytes(&col);
+        let call = colored_call(Primitive::Triangles, &pb, &cb, 300);
         let images: Vec<Target> = [1, 2, 3, 8]
             .iter()
             .map(|&threads| {
@@ -395,8 +375,7 @@ mod tests {
             ]);
             col.extend([rng.next(), rng.next(), rng.next(), rng.next()]);
         }
-        let bytes = |v: Vec<f32>| v.iter().flat_map(|x| x.to_ne_bytes()).collect();
-        (bytes(pos), bytes(col))
+        (bytes(&pos), bytes(&col))
     }
 
     /// Renders `n` grid triangles with `s` both ways into targets of `format`, prefilled with
@@ -406,29 +385,7 @@ mod tests {
         let (w, h) = (48, 40);
         let mut rng = Lcg(seed);
         let (pb, cb) = grid_scene(&mut rng, 40, w as f32, h as f32);
-        let call = DrawCall {
-            color: AttribSource::Array(AttribArray {
-                data: &cb,
-                ty: ComponentType::Float,
-                size: 4,
-                stride: 16,
-                normalized: false,
-            }),
-            ..DrawCall::new(
-                Primitive::Triangles,
-                Indices::Range {
-                    first: 0,
-                    count: 120,
-                },
-                AttribArray {
-                    data: &pb,
-                    ty: ComponentType::Float,
-                    size: 3,
-                    stride: 12,
-                    normalized: false,
-                },
-            )
-        };
+        let call = colored_call(Primitive::Triangles, &pb, &cb, 120);
         let prefill = |t: &mut Target| {
             let (c, d, st) = t.buffers_mut();
             for (i, v) in c.iter_mut().enumerate() {
@@ -808,11 +765,8 @@ mod tests {
                 rng.next() * 1.8 - 0.9,
             ]);
         }
-        let bytes: Vec<u8> = xyz.iter().flat_map(|v| v.to_ne_bytes()).collect();
-        let colors: Vec<u8> = (0..40 * 4)
-            .map(|_| rng.next())
-            .flat_map(|v| v.to_ne_bytes())
-            .collect();
+        let pb = bytes(&xyz);
+        let colors = bytes(&(0..40 * 4).map(|_| rng.next()).collect::<Vec<_>>());
         let mut failures = Vec::new();
         for (prim, width, smooth) in [
             (Primitive::Lines, 1.0, false),
@@ -840,29 +794,7 @@ mod tests {
             } else {
                 s.depth_test = Some(CompareFunc::LessEqual);
             }
-            let call = DrawCall {
-                color: AttribSource::Array(AttribArray {
-                    data: &colors,
-                    ty: ComponentType::Float,
-                    size: 4,
-                    stride: 16,
-                    normalized: false,
-                }),
-                ..DrawCall::new(
-                    prim,
-                    Indices::Range {
-                        first: 0,
-                        count: 40,
-                    },
-                    AttribArray {
-                        data: &bytes,
-                        ty: ComponentType::Float,
-                        size: 3,
-                        stride: 12,
-                        normalized: false,
-                    },
-                )
-            };
+            let call = colored_call(prim, &pb, &colors, 40);
             let (mut fast, mut slow) = (target(32, 32), target(32, 32));
             render(&s, &call, &mut fast).unwrap();
             reference::render(&s, &call, &mut slow);
@@ -934,7 +866,7 @@ mod tests {
         for seed in 1..6 {
             let mut rng = Lcg(seed);
             let (xyz, idx) = jittered_mesh(&mut rng, 3 + seed as usize * 2);
-            let bytes: Vec<u8> = xyz.iter().flat_map(|v| v.to_ne_bytes()).collect();
+            let pb = bytes(&xyz);
             let mut t = target(64, 64);
             t.clear_color(t.bounds(), [0.0; 4], [true; 4]);
             let call = DrawCall {
@@ -943,7 +875,7 @@ mod tests {
                     Primitive::Triangles,
                     Indices::U16(&idx),
                     AttribArray {
-                        data: &bytes,
+                        data: &pb,
                         ty: ComponentType::Float,
                         size: 3,
                         stride: 12,
@@ -1030,29 +962,7 @@ mod tests {
         // so both ways produce the same window coordinates.
         let mut rng = Lcg(31);
         let (pb, cb) = grid_scene(&mut rng, 60, 64.0, 64.0);
-        let call = DrawCall {
-            color: AttribSource::Array(AttribArray {
-                data: &cb,
-                ty: ComponentType::Float,
-                size: 4,
-                stride: 16,
-                normalized: false,
-            }),
-            ..DrawCall::new(
-                Primitive::Triangles,
-                Indices::Range {
-                    first: 0,
-                    count: 180,
-                },
-                AttribArray {
-                    data: &pb,
-                    ty: ComponentType::Float,
-                    size: 3,
-                    stride: 12,
-                    normalized: false,
-                },
-            )
-        };
+        let call = colored_call(Primitive::Triangles, &pb, &cb, 180);
         let mut whole_state = RenderState::new(64, 64);
         whole_state.projection = Mat4::orthographic_rh_gl(0.0, 64.0, 0.0, 64.0, -1.0, 1.0);
         whole_state.depth_test = Some(CompareFunc::Less);
@@ -1118,31 +1028,9 @@ mod tests {
                 col.extend([rng.next(), rng.next(), rng.next(), 1.0]);
             }
         }
-        let pb: Vec<u8> = pos.iter().flat_map(|v| v.to_ne_bytes()).collect();
-        let cb: Vec<u8> = col.iter().flat_map(|v| v.to_ne_bytes()).collect();
-        let call = DrawCall {
-            color: AttribSource::Array(AttribArray {
-                data: &cb,
-                ty: ComponentType::Float,
-                size: 4,
-                stride: 16,
-                normalized: false,
-            }),
-            ..DrawCall::new(
-                Primitive::Triangles,
-                Indices::Range {
-                    first: 0,
-                    count: 90,
-                },
-                AttribArray {
-                    data: &pb,
-                    ty: ComponentType::Float,
-                    size: 3,
-                    stride: 12,
-                    normalized: false,
-                },
-            )
-        };
+        let pb = bytes(&pos);
+        let cb = bytes(&col);
+        let call = colored_call(Primitive::Triangles, &pb, &cb, 90);
         let mut s = RenderState::new(96, 64);
         s.projection = Mat4::perspective_rh_gl(1.0, 1.5, 0.5, 50.0);
         let mut slow = target(96, 64);
@@ -1173,7 +1061,7 @@ mod tests {
         for _ in 0..60 {
             xyz.extend([rng.next() * 64.0, rng.next() * 64.0, 0.0]);
         }
-        let bytes: Vec<u8> = xyz.iter().flat_map(|v| v.to_ne_bytes()).collect();
+        let pb = bytes(&xyz);
         let mut report = Vec::new();
         for prim in [Primitive::Lines, Primitive::Points] {
             let mut errors = Vec::new();
@@ -1188,20 +1076,7 @@ mod tests {
                 (s.line_quality, s.point_quality) = (q, q);
                 let call = DrawCall {
                     color: AttribSource::Constant([1.0, 0.8, 0.3, 1.0]),
-                    ..DrawCall::new(
-                        prim,
-                        Indices::Range {
-                            first: 0,
-                            count: 60,
-                        },
-                        AttribArray {
-                            data: &bytes,
-                            ty: ComponentType::Float,
-                            size: 3,
-                            stride: 12,
-                            normalized: false,
-                        },
-                    )
+                    ..positions_call(prim, &pb, 60)
                 };
                 let (_, _, e) = reference::measure(&s, &[call], &target(64, 64), 1);
                 report.push(format!("{prim:?} {q:?}: {e:?}"));
