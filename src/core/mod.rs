@@ -161,7 +161,7 @@ mod tests {
     }
 
     fn draw(state: &RenderState, t: &mut Target, xyz: &[f32], color: [f32; 4], prim: Primitive) {
-        let pb = bytes(&xyz);
+        let pb = bytes(xyz);
         let call = DrawCall {
             color: AttribSource::Constant(color),
             ..positions_call(prim, &pb, xyz.len() / 3)
