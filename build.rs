@@ -712,7 +712,7 @@ impl Generator {
         h
     }
 
-    fn glext_h(&mut self, sections: &[Section], mut ext: BTreeMap<String, Function>) -> String {
+    fn glext_h(&mut self, sections: &[Section], ext: BTreeMap<String, Function>) -> String {
         let mut h = String::new();
         h += &preamble("GLES/glext.h", "OpenGL ES 1.x extensions");
         h += "#ifndef __gles1_glext_h_\n#define __gles1_glext_h_ 1\n\n";
@@ -721,55 +721,15 @@ impl Generator {
         h += "#ifndef GL_APIENTRYP\n#define GL_APIENTRYP GL_APIENTRY*\n#endif\n\n";
         h += "/* Extension prototypes are declared when GL_GLEXT_PROTOTYPES is defined;\n";
         h += " * the PFN...PROC pointer types always are. */\n\n";
-        let mut sections: Vec<Section> = sections
-            .iter()
-            .filter(|s| s.name.is_some())
-            .cloned()
-            .collect();
-        // Extensions that have functions here but no token section.
-        for (e, _) in GL_EXTENSION_FUNCTIONS {
-            if !sections.iter().any(|s| s.name.as_deref() == Some(e))
-                && ext
-                    .keys()
-                    .any(|n| extension_of(GL_EXTENSION_FUNCTIONS, n) == Some(e))
-            {
-                sections.push(Section {
-                    name: Some(e.to_string()),
-                    ..Default::default()
-                });
-            }
-        }
-        for s in &sections {
-            let name = s.name.as_deref().unwrap();
-            let funcs = take_listed(GL_EXTENSION_FUNCTIONS, name, &mut [&mut ext]);
-            h += &block_open(name, &s.comment);
-            h += &defines(&s.tokens, name);
-            h += &self.pfn_and_prototypes(
-                "GLES/glext.h",
-                &funcs,
-                ("GL_API", "GL_APIENTRY", "GL_APIENTRYP"),
-                "GL_GLEXT_PROTOTYPES",
-            );
-            h += &format!("#endif /* {name} */\n\n");
-        }
-        if !ext.is_empty() {
-            let funcs: Vec<Function> = ext.into_values().collect();
-            for f in &funcs {
-                self.warnings.push(format!(
-                    "{} is not listed under any extension in build.rs; declared in glext.h's \
-                     block of further entry points",
-                    f.name
-                ));
-            }
-            h += "/* Further entry points of this library. */\n";
-            h += &self.pfn_and_prototypes(
-                "GLES/glext.h",
-                &funcs,
-                ("GL_API", "GL_APIENTRY", "GL_APIENTRYP"),
-                "GL_GLEXT_PROTOTYPES",
-            );
-            h += "\n";
-        }
+        h += &self.extension_blocks(
+            "GLES/glext.h",
+            sections,
+            GL_EXTENSION_FUNCTIONS,
+            ext,
+            ("GL_API", "GL_APIENTRY", "GL_APIENTRYP"),
+            "GL_GLEXT_PROTOTYPES",
+            "is not listed under any extension in build.rs",
+        );
         h += CPP_CLOSE;
         h += "#endif /* __gles1_glext_h_ */\n";
         h
@@ -823,7 +783,7 @@ impl Generator {
         h
     }
 
-    fn eglext_h(&mut self, sections: &[Section], mut ext: BTreeMap<String, Function>) -> String {
+    fn eglext_h(&mut self, sections: &[Section], ext: BTreeMap<String, Function>) -> String {
         let mut h = String::new();
         h += &preamble("EGL/eglext.h", "EGL extensions");
         h += "#ifndef __eglext_h_\n#define __eglext_h_ 1\n\n";
@@ -831,16 +791,43 @@ impl Generator {
         h += CPP_OPEN;
         h += "/* Extension prototypes are declared when EGL_EGLEXT_PROTOTYPES is defined;\n";
         h += " * the PFN...PROC pointer types always are. */\n\n";
+        h += &self.extension_blocks(
+            "EGL/eglext.h",
+            sections,
+            EGL_EXTENSION_FUNCTIONS,
+            ext,
+            ("EGLAPI", "EGLAPIENTRY", "EGLAPIENTRYP"),
+            "EGL_EGLEXT_PROTOTYPES",
+            "is neither EGL 1.4 nor listed under an EGL extension in build.rs",
+        );
+        h += CPP_CLOSE;
+        h += "#endif /* __eglext_h_ */\n";
+        h
+    }
+
+    /// One `#ifndef NAME` block per extension (its tokens, then its functions' pointer types
+    /// and prototypes under `guard`), including extensions that have functions but no token
+    /// section, then a block for the functions `table` lists under no extension.
+    #[allow(clippy::too_many_arguments)]
+    fn extension_blocks(
+        &mut self,
+        header: &'static str,
+        sections: &[Section],
+        table: &[(&str, &[&str])],
+        mut ext: BTreeMap<String, Function>,
+        decor: (&str, &str, &str),
+        guard: &'static str,
+        unlisted: &str,
+    ) -> String {
+        let mut h = String::new();
         let mut sections: Vec<Section> = sections
             .iter()
             .filter(|s| s.name.is_some())
             .cloned()
             .collect();
-        for (e, _) in EGL_EXTENSION_FUNCTIONS {
+        for (e, _) in table {
             if !sections.iter().any(|s| s.name.as_deref() == Some(e))
-                && ext
-                    .keys()
-                    .any(|n| extension_of(EGL_EXTENSION_FUNCTIONS, n) == Some(e))
+                && ext.keys().any(|n| extension_of(table, n) == Some(e))
             {
                 sections.push(Section {
                     name: Some(e.to_string()),
@@ -850,37 +837,24 @@ impl Generator {
         }
         for s in &sections {
             let name = s.name.as_deref().unwrap();
-            let funcs = take_listed(EGL_EXTENSION_FUNCTIONS, name, &mut [&mut ext]);
+            let funcs = take_listed(table, name, &mut [&mut ext]);
             h += &block_open(name, &s.comment);
             h += &defines(&s.tokens, name);
-            h += &self.pfn_and_prototypes(
-                "EGL/eglext.h",
-                &funcs,
-                ("EGLAPI", "EGLAPIENTRY", "EGLAPIENTRYP"),
-                "EGL_EGLEXT_PROTOTYPES",
-            );
+            h += &self.pfn_and_prototypes(header, &funcs, decor, guard);
             h += &format!("#endif /* {name} */\n\n");
         }
         if !ext.is_empty() {
             let funcs: Vec<Function> = ext.into_values().collect();
             for f in &funcs {
                 self.warnings.push(format!(
-                    "{} is neither EGL 1.4 nor listed under an EGL extension in build.rs; \
-                     declared in eglext.h's block of further entry points",
+                    "{} {unlisted}; declared in {header}'s block of further entry points",
                     f.name
                 ));
             }
             h += "/* Further entry points of this library. */\n";
-            h += &self.pfn_and_prototypes(
-                "EGL/eglext.h",
-                &funcs,
-                ("EGLAPI", "EGLAPIENTRY", "EGLAPIENTRYP"),
-                "EGL_EGLEXT_PROTOTYPES",
-            );
+            h += &self.pfn_and_prototypes(header, &funcs, decor, guard);
             h += "\n";
         }
-        h += CPP_CLOSE;
-        h += "#endif /* __eglext_h_ */\n";
         h
     }
 
