@@ -389,7 +389,14 @@ pub struct FragmentKey {
 impl FragmentKey {
     pub fn new(state: &RenderState, format: TargetFormat) -> FragmentKey {
         let depth = state.depth_test.zip(format.depth);
-        let stencil = state.stencil_test.filter(|_| format.stencil_bits > 0);
+        // The reference clamped to the 8-bit buffer once here, not per fragment.
+        let stencil = state
+            .stencil_test
+            .filter(|_| format.stencil_bits > 0)
+            .map(|s| StencilTest {
+                reference: s.reference.clamp(0, 255),
+                ..s
+            });
         let keep = keep_mask(state.color_mask);
         let logic_op = state.logic_op;
         // Logic op replaces blending (ES 1.1 §4.1.10).
@@ -735,7 +742,7 @@ fn general(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
         }
         if let Some(s) = k.stencil {
             let stored = band.stencil[at];
-            let reference = s.reference.clamp(0, 255) as u8;
+            let reference = s.reference as u8;
             let mask = s.mask as u8;
             if !s.func.test(reference & mask, stored & mask) {
                 band.stencil[at] = stencil_write(s.fail, stored, reference, k.stencil_writemask);
@@ -747,7 +754,7 @@ fn general(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
             if !func.test(z, band.depth[at]) {
                 if let Some(s) = k.stencil {
                     let stored = band.stencil[at];
-                    let r = s.reference.clamp(0, 255) as u8;
+                    let r = s.reference as u8;
                     band.stencil[at] = stencil_write(s.depth_fail, stored, r, k.stencil_writemask);
                 }
                 continue;
@@ -758,7 +765,7 @@ fn general(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
         }
         if let Some(s) = k.stencil {
             let stored = band.stencil[at];
-            let r = s.reference.clamp(0, 255) as u8;
+            let r = s.reference as u8;
             band.stencil[at] = stencil_write(s.depth_pass, stored, r, k.stencil_writemask);
         }
         if k.keep == u32::MAX {
