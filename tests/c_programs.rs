@@ -22,6 +22,9 @@
 //! ours through the compatibility names. It is skipped (with a message) where Mesa's
 //! development files are not installed.
 
+mod common;
+use common::lib_dir;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -43,21 +46,6 @@ const DIFF_STEPS: u8 = 2;
 
 fn c_tests_dir() -> PathBuf {
     Path::new(MANIFEST_DIR).join("c_tests")
-}
-
-/// The directory of the library under test.
-fn lib_dir() -> PathBuf {
-    // `target/<profile>/deps`, beside this test executable: cargo builds the cdylib there
-    // for the tests, fresh, while its copy in `target/<profile>` is only refreshed by
-    // `cargo build`.
-    let exe = std::env::current_exe().expect("current_exe");
-    let dir = exe.parent().expect("deps dir").to_path_buf();
-    assert!(
-        dir.join("libGLES_CM.so").exists(),
-        "{} not found (cargo builds the cdylib with the tests)",
-        dir.join("libGLES_CM.so").display()
-    );
-    dir
 }
 
 fn out_root() -> PathBuf {

@@ -3,6 +3,9 @@
 //! library, the headers include cleanly in any order, and the token values agree with the
 //! system's Khronos headers where those are installed.
 
+mod common;
+use common::lib_dir;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -49,21 +52,6 @@ const ENTRY_POINTS: &str = include_str!(concat!(env!("OUT_DIR"), "/entry_points.
 
 fn include_dir() -> PathBuf {
     Path::new(MANIFEST_DIR).join("include")
-}
-
-/// The directory of the library under test.
-fn lib_dir() -> PathBuf {
-    // `target/<profile>/deps`, beside this test executable: cargo builds the cdylib there
-    // for the tests, fresh, while its copy in `target/<profile>` is only refreshed by
-    // `cargo build`.
-    let exe = std::env::current_exe().expect("current_exe");
-    let dir = exe.parent().expect("deps dir").to_path_buf();
-    assert!(
-        dir.join("libGLES_CM.so").exists(),
-        "{} not found (cargo builds the cdylib with the tests)",
-        dir.join("libGLES_CM.so").display()
-    );
-    dir
 }
 
 /// A scratch directory for compiled C programs.

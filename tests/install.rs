@@ -3,29 +3,11 @@
 //! `pkg-config --cflags --libs glesv1_cm egl` against that tree alone then runs, draws and
 //! reads back the right pixels. Skipped (with a message) where pkg-config is not installed.
 
-use std::path::{Path, PathBuf};
+mod common;
+use common::{lib_dir, run};
+
+use std::path::Path;
 use std::process::Command;
-
-fn deps_dir() -> PathBuf {
-    std::env::current_exe()
-        .expect("current_exe")
-        .parent()
-        .expect("deps dir")
-        .to_path_buf()
-}
-
-fn run(cmd: &mut Command) -> String {
-    let out = cmd
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run {cmd:?}: {e}"));
-    assert!(
-        out.status.success(),
-        "{cmd:?} failed:\n{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout).into_owned()
-}
 
 #[test]
 fn installed_tree_builds_and_runs_a_program_through_pkg_config() {
@@ -38,12 +20,12 @@ fn installed_tree_builds_and_runs_a_program_through_pkg_config() {
         return;
     }
     let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let prefix = deps_dir().join("install-test");
+    let prefix = lib_dir().join("install-test");
     let _ = std::fs::remove_dir_all(&prefix);
     run(Command::new("sh")
         .arg(manifest.join("scripts/install.sh"))
         .arg(&prefix)
-        .env("GLES_CM_LIB", deps_dir().join("libGLES_CM.so")));
+        .env("GLES_CM_LIB", lib_dir().join("libGLES_CM.so")));
     for name in ["libGLES_CM.so", "libGLESv1_CM.so.1", "libEGL.so.1"] {
         assert!(prefix.join("lib").join(name).exists(), "{name} installed");
     }

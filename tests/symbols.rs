@@ -2,6 +2,9 @@
 //! functions the generated headers declare, carries the SONAME `libGLES_CM.so`, and
 //! `scripts/compat-names.sh` gives it the usual file names as symlinks to the one object.
 
+mod common;
+use common::{lib_dir, run};
+
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -29,39 +32,10 @@ const HEADERS: &[(&str, &str)] = &[
     ),
 ];
 
-/// The directory of the library under test.
-fn lib_dir() -> PathBuf {
-    // `target/<profile>/deps`, beside this test executable: cargo builds the cdylib there
-    // for the tests, fresh, while its copy in `target/<profile>` is only refreshed by
-    // `cargo build`.
-    let exe = std::env::current_exe().expect("current_exe");
-    let dir = exe.parent().expect("deps dir").to_path_buf();
-    assert!(
-        dir.join("libGLES_CM.so").exists(),
-        "{} not found (cargo builds the cdylib with the tests)",
-        dir.join("libGLES_CM.so").display()
-    );
-    dir
-}
-
 fn library() -> PathBuf {
     let lib = lib_dir().join("libGLES_CM.so");
     assert!(lib.exists(), "{} not found", lib.display());
     lib
-}
-
-fn run(cmd: &mut Command) -> String {
-    let out = cmd
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run {cmd:?}: {e}"));
-    assert!(
-        out.status.success(),
-        "{cmd:?} failed ({}):\n{}\n{}",
-        out.status,
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
 /// Names of the dynamic symbols the library defines.
