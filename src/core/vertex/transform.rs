@@ -51,6 +51,9 @@ pub(super) struct Stage<'s, 'd> {
     lighting: Option<Prepared>,
     /// The eye-space normal is needed (lighting or texgen).
     need_normal: bool,
+    /// The eye-space position is needed (lighting, fog, user clip planes, texgen, point
+    /// attenuation); otherwise the clip position comes from one product and `eye` is 0.
+    need_eye: bool,
     /// Per palette matrix: it and its normal matrix.
     palette: Option<Vec<(Mat4, Mat3)>>,
     tex_identity: [bool; TEXTURE_UNITS],
@@ -82,6 +85,12 @@ impl<'s, 'd> Stage<'s, 'd> {
                 1.0
             },
             need_normal: lighting.is_some() || state.texgen.iter().any(Option::is_some),
+            need_eye: lighting.is_some()
+                || state.fog.is_some()
+                || !state.clip_planes.is_empty()
+                || state.texgen.iter().any(Option::is_some)
+                || (draw.primitive == Primitive::Points
+                    && state.point_params.attenuation != [1.0, 0.0, 0.0]),
             lighting,
             palette: state
                 .matrix_palette
@@ -105,7 +114,12 @@ impl<'s, 'd> Stage<'s, 'd> {
             } else {
                 Vec3::ZERO
             };
-            return (self.modelview * p, ne);
+            let eye = if self.need_eye {
+                self.modelview * p
+            } else {
+                Vec4::ZERO
+            };
+            return (eye, ne);
         };
         let (mut eye, mut ne) = (Vec4::ZERO, Vec3::ZERO);
         let obj_n = if self.need_normal { n() } else { Vec3::ZERO };
