@@ -189,13 +189,19 @@ pub struct BandMut<'a> {
 }
 
 impl BandMut<'_> {
-    /// The rows of `rect` (already within the target) that fall in this band, as index
+    /// The rows of `rect` (within the target, or empty) that fall in this band, as index
     /// ranges into the band's buffers.
     pub fn rows_of(&self, rect: Rect) -> impl Iterator<Item = std::ops::Range<usize>> + '_ {
+        // An empty rect can have corners anywhere, negative ones included (a scissor box
+        // wholly off the surface): it has no rows.
         let y0 = rect.y0.max(self.y0);
-        let y1 = rect.y1.min(self.y0 + self.rows);
+        let y1 = if rect.is_empty() {
+            y0
+        } else {
+            rect.y1.min(self.y0 + self.rows)
+        };
         let (x0, x1) = (rect.x0 as usize, rect.x1 as usize);
-        (y0..y1).filter(move |_| x0 < x1).map(move |y| {
+        (y0..y1).map(move |y| {
             let start = (y - self.y0) as usize * self.width;
             start + x0..start + x1
         })

@@ -33,13 +33,6 @@ impl Context {
             (self.color_mask, self.depth_mask, self.stencil_writemask);
         self.with_frame(|frame| {
             let rect = state.pixel_bounds(frame.bounds());
-            // A scissor box wholly outside the surface leaves an empty rect whose corners
-            // may be negative (glScissor(INT_MIN, 0, 5, 5)); the band code indexes rows with
-            // them as usize and panicked on a rasterizer thread. Nothing to clear then.
-            // (Found by c_tests/conf_fuzz.c.)
-            if rect.is_empty() {
-                return;
-            }
             let format = frame.format();
             if mask & GL_COLOR_BUFFER_BIT != 0 {
                 frame.clear_color(rect, format.color.encode(color), keep_mask(color_mask));
