@@ -262,6 +262,30 @@ int main(void)
         glDisableClientState(GL_NORMAL_ARRAY);
         ct_save("flat_smooth");
     }
+
+    /* §2.12.7 clamps the lit color to [0, 1] before texturing: a light of diffuse 2 gives
+     * 0.04 + 1.6 -> 1, and MODULATE with a gray 128 texel gives 128, not 0.82 * 255. */
+    {
+        static const GLfloat two[4] = {2, 2, 2, 1};
+        static const GLubyte gray[4] = {128, 128, 128, 255};
+        GLuint tex;
+        GLubyte px[4];
+        reset_light();
+        glLightfv(GL_LIGHT0, GL_DIFFUSE, two);
+        glGenTextures(1, &tex);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, gray);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        glEnable(GL_TEXTURE_2D);
+        quad(1, 0, 0, 1, 0);
+        glReadPixels(16, 16, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        /* No image: the differential run would flag the known deviation. */
+        CHECK_MESA_DEVIATES(px[0] >= 127 && px[0] <= 129,
+                            "Mesa modulates the unclamped lit color");
+        glDisable(GL_TEXTURE_2D);
+        glDeleteTextures(1, &tex);
+    }
     CHECK_GL(GL_NO_ERROR);
     return ct_done();
 }

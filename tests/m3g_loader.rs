@@ -992,27 +992,14 @@ fn compare(ours: &[u8], reference: &Path) -> Diff {
     }
 }
 
-/// Images that currently match their reference within the MANIFEST's tolerance (≤ 1 % of
-/// pixels off by more than 8, mean ≤ 1.0); the others are reported, not asserted.
-/// wizzer-teapot_t0 is left out: 1.07 % of its pixels differ by more than 8, all at texel
-/// boundaries of its nearest-filtered texture (the image is otherwise the same).
-const PASSING: &[&str] = &[
-    "cube_t0.png",
-    "desktop-m3g-skinned_t0.png",
-    "desktop-m3g-skinned_t1000.png",
-    "desktop-m3g-skinned_t2500.png",
-    "helloworld_t0.png",
-    "m3x-teapot_t0.png",
-    "memory_t0.png",
-    "monkey_step1_t0.png",
-    "monkey_step2_t0.png",
-    "robot_t0.png",
-    "robot_t1000.png",
-    "robot_t2500.png",
-    "scene_t0.png",
-    "simple_t0.png",
-];
-
+/// Renders every corpus reference image's file at its time and compares it with the
+/// reference under the MANIFEST's tolerance (≤ 1 % of pixels off by more than 8, mean ≤ 1.0).
+///
+/// With lit colors clamped after texturing, as Mesa (which made the references) does, every
+/// image must pass. With the specification's clamp right after lighting, every image but
+/// wizzer-teapot_t0 must pass: its specular highlight lies above 1 and modulates a texture,
+/// so the references show a brighter patch there (825 pixels over 8, 1.07 %). That patch must
+/// be the only difference, so the spec-mode image must pass once those pixels are excused.
 #[test]
 fn corpus_renders_compare_with_the_reference_images() {
     let refs = corpus_dir().join("reference");
@@ -1022,8 +1009,9 @@ fn corpus_renders_compare_with_the_reference_images() {
         .filter(|n| n.ends_with(".png"))
         .collect();
     names.sort();
-    eprintln!("| image | load ms | objects | max | mean | PSNR dB | px >8 | pass |");
-    eprintln!("|---|---|---|---|---|---|---|---|");
+    assert_eq!(names.len(), 15);
+    eprintln!("| image | load ms | objects | clamp | max | mean | PSNR dB | px >8 | pass |");
+    eprintln!("|---|---|---|---|---|---|---|---|---|");
     let mut failures = Vec::new();
     for n in names {
         let (stem, t) = n.trim_end_matches(".png").rsplit_once("_t").unwrap();
@@ -1033,30 +1021,48 @@ fn corpus_renders_compare_with_the_reference_images() {
             .load_file(corpus_dir().join(format!("{stem}.m3g")))
             .unwrap();
         let load_ms = start.elapsed().as_secs_f64() * 1000.0;
-        let img = render_roots(&l.roots, t, 240, 320).unwrap();
-        let d = compare(&img, &refs.join(&n));
-        let pass = d.over8 <= 768 && d.mean <= 1.0;
-        eprintln!(
-            "| {n} | {load_ms:.2} | {} | {} | {:.3} | {:.2} | {} | {} |",
-            l.objects.len(),
-            d.max,
-            d.mean,
-            d.psnr,
-            d.over8,
-            if pass { "yes" } else { "no" }
-        );
+        let mut images = Vec::new();
+        for (clamp_after_lighting, mode) in [(false, "late"), (true, "spec")] {
+            let img = render_roots(&l.roots, t, 240, 320, clamp_after_lighting).unwrap();
+            let d = compare(&img, &refs.join(&n));
+            let pass = d.over8 <= 768 && d.mean <= 1.0;
+            eprintln!(
+                "| {n} | {load_ms:.2} | {} | {mode} | {} | {:.3} | {:.2} | {} | {} |",
+                l.objects.len(),
+                d.max,
+                d.mean,
+                d.psnr,
+                d.over8,
+                if pass { "yes" } else { "no" }
+            );
+            if !pass && (mode == "late" || n != "wizzer-teapot_t0.png") {
+                failures.push(format!("{n} ({mode})"));
+            }
+            images.push(img);
+        }
+        if n == "wizzer-teapot_t0.png" {
+            // The two modes differ only where a lit channel exceeded 1; excusing those
+            // pixels, the spec-mode image is within tolerance too.
+            let (late, spec) = (&images[0], &images[1]);
+            let r = image::open(refs.join(&n)).unwrap().to_rgb8();
+            let unexplained = (0..late.len() / 3)
+                .filter(|&i| {
+                    let (a, b) = (&late[3 * i..3 * i + 3], &spec[3 * i..3 * i + 3]);
+                    let want = &r.as_raw()[3 * i..3 * i + 3];
+                    a == b && (0..3).any(|k| b[k].abs_diff(want[k]) > 8)
+                })
+                .count();
+            assert!(unexplained <= 768, "{unexplained}");
+        }
         if let Ok(dir) = std::env::var("M3G_RENDER_DIR") {
             image::save_buffer(
                 Path::new(&dir).join(&n),
-                &img,
+                &images[0],
                 240,
                 320,
                 image::ExtendedColorType::Rgb8,
             )
             .unwrap();
-        }
-        if PASSING.contains(&n.as_str()) && !pass {
-            failures.push(n);
         }
     }
     assert!(failures.is_empty(), "regressed: {failures:?}");

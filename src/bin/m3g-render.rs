@@ -23,7 +23,7 @@ use GLES_CM::m3g::loader::{render_roots, Loader};
 use GLES_CM::m3g::{Camera, NodeExt, Object3D, Object3DExt, World};
 
 const USAGE: &str = "\
-usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera USER_ID] [--out PATH]
+usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera USER_ID] [--late-clamp] [--out PATH]
   FILE           a .m3g file (its first World is rendered)
   --time MS      world time of the (first) frame, default 0
   --frames N     render N frames (1..=100000) at MS, MS+step, ...; writes PATH-000.png, ...
@@ -31,6 +31,8 @@ usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera
   --step MS      time between frames (with --frames), default 40
   --size WxH     image size, 1..=2048 each, default 240x320
   --camera ID    render through the Camera with user ID ID instead of the active camera
+  --late-clamp   clamp lit colors after texturing, as Mesa does (the corpus references)
+                 instead of right after lighting, as the specification does
   --out PATH     output PNG, default FILE with the extension .png";
 
 const MAX_FRAMES: u32 = 100_000;
@@ -42,6 +44,7 @@ struct Args {
     step: i32,
     size: (u32, u32),
     camera: Option<i32>,
+    late_clamp: bool,
     out: Option<PathBuf>,
 }
 
@@ -58,6 +61,7 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
     let mut step = None;
     let mut size = (240, 320);
     let mut camera = None;
+    let mut late_clamp = false;
     let mut out = None;
     while let Some(a) = it.next() {
         let mut value = |name: &str| it.next().ok_or_else(|| format!("{name} needs a value"));
@@ -96,6 +100,7 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
                     "an integer user ID",
                 )?)
             }
+            "--late-clamp" => late_clamp = true,
             "--out" => out = Some(PathBuf::from(value("--out")?)),
             "-h" | "--help" => return Err(String::new()),
             s if s.starts_with('-') && s.len() > 1 => return Err(format!("unknown option {s}")),
@@ -128,6 +133,7 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
         step,
         size,
         camera,
+        late_clamp,
         out,
     })
 }
@@ -399,7 +405,7 @@ fn run() -> Result<String, Failure> {
         world.set_active_camera(&camera);
     }
     let render = |t: i32| {
-        render_roots(&loaded.roots, t, a.size.0, a.size.1)
+        render_roots(&loaded.roots, t, a.size.0, a.size.1, !a.late_clamp)
             .map_err(|e| format!("{} at {t} ms: {e}", a.file.display()))
     };
     let out = a

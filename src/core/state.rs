@@ -295,6 +295,11 @@ pub struct Lighting {
     /// `GL_COLOR_MATERIAL`: the vertex color (array or current) replaces the ambient and
     /// diffuse colors of both materials.
     pub color_material: bool,
+    /// Whether lit colors are clamped to [0, 1] right after lighting, as GL (ES 1.1
+    /// §2.12.7) and M3G (GL 1.3 §2.13.6) require. `false` keeps channels above 1 until the
+    /// texture environment's result is clamped, which is what Mesa's softpipe and llvmpipe
+    /// do; the M3G corpus references were rendered that way.
+    pub clamp_after_lighting: bool,
 }
 
 impl Default for Lighting {
@@ -306,6 +311,7 @@ impl Default for Lighting {
             front: Material::default(),
             back: Material::default(),
             color_material: false,
+            clamp_after_lighting: true,
         }
     }
 }

@@ -430,6 +430,7 @@ impl Context {
                 front: material,
                 back: material,
                 color_material: e.color_material,
+                clamp_after_lighting: true,
             }
         });
         rs.normalize = e.normalize;

@@ -161,6 +161,7 @@ pub struct Graphics3D {
     camera: Option<(Camera, Mat4)>,
     lights: Vec<Option<(Light, Mat4)>>,
     culling: bool,
+    clamp_after_lighting: bool,
     stats: RenderStats,
     textures: TexCache,
 }
@@ -194,6 +195,7 @@ impl Graphics3D {
             camera: None,
             lights: Vec::new(),
             culling: true,
+            clamp_after_lighting: true,
             stats: RenderStats::default(),
             textures: TexCache::default(),
         }
@@ -208,6 +210,20 @@ impl Graphics3D {
     /// Whether view-frustum culling is on.
     pub fn is_culling_enabled(&self) -> bool {
         self.culling
+    }
+
+    /// Whether lit colors are clamped to [0, 1] right after lighting (the default, as the
+    /// OpenGL 1.3 lighting that M3G cites requires) or only after texturing (a Rust
+    /// extension). The JSR-184 reference images in the M3G corpus were rendered on Mesa,
+    /// which clamps late: a specular highlight above 1 then brightens the texture it
+    /// modulates. Turn clamping off to reproduce those images.
+    pub fn set_clamp_after_lighting(&mut self, enable: bool) {
+        self.clamp_after_lighting = enable;
+    }
+
+    /// Whether lit colors are clamped right after lighting.
+    pub fn is_clamp_after_lighting(&self) -> bool {
+        self.clamp_after_lighting
     }
 
     /// What rendering has done so far (a Rust extension).
@@ -689,6 +705,7 @@ impl Graphics3D {
         let Graphics3D {
             bound,
             culling,
+            clamp_after_lighting,
             stats,
             textures,
             ..
@@ -706,7 +723,11 @@ impl Graphics3D {
                         continue;
                     }
                     s.modelview = modelview;
-                    draw_submesh(&mut s, b, textures, stats, vb, ib, app, item, &lights);
+                    let lit = LitBy {
+                        lights: &lights,
+                        clamp_after_lighting: *clamp_after_lighting,
+                    };
+                    draw_submesh(&mut s, b, textures, stats, vb, ib, app, item, lit);
                 }
                 What::Sprite(sprite, app) => {
                     draw_sprite(&s, b, sprite, app, modelview, item.alpha);
@@ -1195,6 +1216,13 @@ fn outside_frustum(vb: &VertexBufferData, modelview: Mat4, projection: Mat4) -> 
     })
 }
 
+/// The scene's lights in eye space and how their result is clamped.
+#[derive(Clone, Copy)]
+struct LitBy<'a> {
+    lights: &'a [EyeLight],
+    clamp_after_lighting: bool,
+}
+
 /// Draws one submesh: the Appearance becomes the state (compositing, polygon mode,
 /// lighting, fog, texture units), the VertexBuffer the draw call (positions with scale and
 /// bias in the modelview, normals, colors, texture coordinates with their scale and bias
@@ -1209,7 +1237,7 @@ fn draw_submesh(
     ib: &IndexBuffer,
     app: &Appearance,
     item: &Item,
-    lights: &[EyeLight],
+    lit: LitBy,
 ) {
     let a = app.d().clone();
     apply_compositing(s, a.compositing_mode.as_ref(), b.depth);
@@ -1229,7 +1257,8 @@ fn draw_submesh(
         let two_side = a.polygon_mode.as_ref().is_some_and(|p| p.d().two_sided);
         let mat = core_material(m, item.alpha);
         s.lighting = Some(Lighting {
-            lights: lights
+            lights: lit
+                .lights
                 .iter()
                 .filter(|l| l.scope & item.scope != 0)
                 .take(MAX_LIGHTS)
@@ -1240,6 +1269,7 @@ fn draw_submesh(
             front: mat,
             back: mat,
             color_material: m.tracking,
+            clamp_after_lighting: lit.clamp_after_lighting,
         });
         s.normalize = true;
     }

@@ -12,7 +12,7 @@
 //! VP̂ is the unit vector from the vertex to the light (the light's direction when its w is
 //! 0); ĥ = normalize(VP̂ + (0, 0, 1)) (the viewer at infinity); f_i is 1 when n ⊙ VP̂ ≠ 0 and
 //! 0 otherwise; (n ⊙ ĥ)^0 is 1, 0⁰ included. Alpha is the diffuse material's alpha. Each
-//! channel is clamped to [0, 1].
+//! channel is clamped to [0, 1] (or only to [0, ∞) when `clamp_after_lighting` is off).
 //!
 //! - att = 1 for directional lights, else 1 / (k_c + k_l·d + k_q·d²). A **zero denominator**
 //!   (all three coefficients may be 0, and k_c = 0 with the vertex on the light) counts as
@@ -50,6 +50,9 @@ pub struct Prepared {
     front: Material,
     back: Material,
     color_material: bool,
+    /// The upper bound of a lit channel: 1, or the largest float when lit colors are not
+    /// clamped after lighting.
+    ceiling: f32,
 }
 
 /// The cosine of a spot cutoff in degrees, exact at 90.
@@ -97,6 +100,11 @@ impl Prepared {
             front: l.front,
             back: l.back,
             color_material: l.color_material,
+            ceiling: if l.clamp_after_lighting {
+                1.0
+            } else {
+                f32::MAX
+            },
         }
     }
 
@@ -160,7 +168,7 @@ impl Prepared {
         }
         let c = c.truncate().extend(m.diffuse.w);
         // max/min rather than clamp: NaN (from NaN inputs) becomes 0.
-        c.max(Vec4::ZERO).min(Vec4::ONE)
+        c.max(Vec4::ZERO).min(Vec4::splat(self.ceiling))
     }
 }
 

@@ -7,12 +7,14 @@ use crate::m3g::{Graphics3D, Object3D, Object3DExt, World};
 /// Renders the first World among `roots` (a file without one is an error) at `time_ms` with
 /// its active camera into a `width` × `height` 8-bit RGBA target with a 16-bit depth buffer
 /// and hints 0, cleared by the World's Background (or to black and depth 1 without one).
-/// Returns RGB bytes, top row first.
+/// `clamp_after_lighting` as in [`Graphics3D::set_clamp_after_lighting`] (`false` for the
+/// reference images). Returns RGB bytes, top row first.
 pub fn render_roots(
     roots: &[Object3D],
     time_ms: i32,
     width: u32,
     height: u32,
+    clamp_after_lighting: bool,
 ) -> std::result::Result<Vec<u8>, String> {
     let world = roots
         .iter()
@@ -34,6 +36,7 @@ pub fn render_roots(
         },
     );
     let mut g = Graphics3D::new();
+    g.set_clamp_after_lighting(clamp_after_lighting);
     g.bind_target(target, true, 0)
         .map_err(|e| format!("cannot bind a {width}x{height} target: {e}"))?;
     let r = g.render_world(&world);
