@@ -26,6 +26,9 @@ use super::texenv::{self, Fog, TextureUnit};
 use super::texture::{MagFilter, MinFilter, Sampler};
 use super::TEXTURE_UNITS;
 
+mod lanes;
+use lanes::{simple, textured};
+
 /// Which span routine a key runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Route {
@@ -600,111 +603,6 @@ impl SpanInterp {
                 std::array::from_fn(|c| self.run_c[c] + self.run_dc[c] * k)
             }
         }
-    }
-}
-
-/// The span routine for keys without alpha test, stencil, logic op or dither.
-fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
-    k: &FragmentKey,
-    t: &Shading,
-    span: Span,
-    band: &mut BandMut<'_>,
-) {
-    let mut interp = SpanInterp::new(t, span, k.perspective);
-    let row = (span.y - band.y0) as usize * band.width;
-    let flat = t.flat.unwrap_or_default();
-    let flat_word = k.color.encode(flat);
-    let write_color = k.keep != u32::MAX;
-    for (i, x) in (span.x0..span.x1).enumerate() {
-        let at = row + x as usize;
-        if DEPTH {
-            let (func, df) = k.depth.expect("DEPTH routes have a depth test");
-            let z = df.quantize(interp.z(i));
-            if !func.test(z, band.depth[at]) {
-                continue;
-            }
-            if k.depth_write {
-                band.depth[at] = z;
-            }
-        }
-        if !write_color {
-            continue;
-        }
-        let dst = band.color[at];
-        let word = if BLEND {
-            let src = if SMOOTH { interp.color(i) } else { flat };
-            let b = k.blend.expect("BLEND routes blend");
-            k.color.encode(blend(&b, src, decode(k.color, dst)))
-        } else if SMOOTH {
-            k.color.encode(interp.color(i))
-        } else {
-            flat_word
-        };
-        band.color[at] = (dst & k.keep) | (word & !k.keep);
-    }
-}
-
-/// The span routine for keys with at most one texture unit and no alpha test, stencil,
-/// logic op or dither. The depth test runs before texturing, which gives the same result
-/// (ES 1.1 §3.7: nothing between them can discard a fragment here) and skips the
-/// sampling of hidden fragments.
-fn textured<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
-    k: &FragmentKey,
-    t: &Shading,
-    span: Span,
-    band: &mut BandMut<'_>,
-) {
-    let stage = k.tex.as_deref().expect("textured routes have a stage");
-    let mut interp = SpanInterp::new(t, span, k.perspective);
-    let mut tex = SpanTex::new(stage, t, span);
-    let row = (span.y - band.y0) as usize * band.width;
-    let write_color = k.keep != u32::MAX;
-    let unit = stage.units.first().map(|(_, u)| u);
-    let ts = tex.spans[0];
-    // Without planes (cannot happen for primitives set up with this state) texturing is off.
-    let textured = FILTER != F_NONE && t.tex.is_some();
-    for (i, x) in (span.x0..span.x1).enumerate() {
-        let at = row + x as usize;
-        if DEPTH {
-            let (func, df) = k.depth.expect("DEPTH routes have a depth test");
-            let z = df.quantize(interp.z(i));
-            if !func.test(z, band.depth[at]) {
-                continue;
-            }
-            if k.depth_write {
-                band.depth[at] = z;
-            }
-        }
-        if !write_color {
-            continue;
-        }
-        let mut c = match t.flat {
-            Some(c) => c,
-            None => interp.color(i),
-        };
-        if textured {
-            let u = unit.expect("a filter implies a unit");
-            let sm = &u.sampler;
-            let (s, tt) = ts.st(i);
-            let texel = match FILTER {
-                F_NEAREST => sm.nearest(0, s, tt),
-                F_BILINEAR => sm.bilinear(0, s, tt),
-                F_TRILINEAR => sm.trilinear(s, tt, tex.lambda_at(0, i, s, tt)),
-                _ => sm.sample_255(s, tt, tex.lambda_at(0, i, s, tt)),
-            };
-            const INV_255: f32 = 1.0 / 255.0;
-            let texel = texel.map(|v| v * INV_255);
-            c = texenv::apply(&u.env, sm.format, texel, c, c);
-        }
-        tex.fog(i, &mut c);
-        let dst = band.color[at];
-        let word = if BLEND {
-            let b = k.blend.expect("BLEND routes blend");
-            k.color.encode(blend(&b, c, decode(k.color, dst)))
-        } else {
-            k.color.encode(c)
-        };
-        band.color[at] = (dst & k.keep) | (word & !k.keep);
     }
 }
 

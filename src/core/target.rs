@@ -34,7 +34,7 @@ impl ColorFormat {
 
     /// Converts a color in [0, 1] (clamped here) to the stored RGBA8 word, rounding to the
     /// nearest value the format can hold: `round(c · (2ⁿ − 1))`.
-    #[inline]
+    #[inline(always)]
     pub fn encode(self, rgba: [f32; 4]) -> u32 {
         let byte = |c: f32| unorm(c, 8);
         match self {

@@ -1,0 +1,816 @@
+//! The specialized span routines, run over groups of up to [`LANES`] pixels with one array
+//! per channel. Each step (depth, color interpolation, blending, encoding) is a loop over
+//! the whole group with its state decisions taken once outside it, which the compiler turns
+//! into SIMD; per pixel, the arithmetic is exactly the per-pixel code's (same operations in
+//! the same order, no fused multiply-add), so the images are bit-identical to it.
+
+// Lane loops index several arrays in step; that is the shape the vectorizer wants.
+#![allow(clippy::needless_range_loop)]
+
+use super::*;
+use crate::core::texenv::{EnvMode, FogMode, TexEnv};
+use crate::core::texture::{BaseFormat, Image, Wrap};
+
+/// Pixels per group: two SSE vectors of f32, short enough that short spans waste little.
+pub(super) const LANES: usize = 8;
+
+type Lane<T> = [T; LANES];
+
+/// Lane indices as floats: `i0 as f32 + J32[j]` is `(i0 + j) as f32` exactly (both are
+/// integers below 2²⁴), without a per-lane integer conversion.
+const J32: Lane<f32> = {
+    let mut a = [0.0; LANES];
+    let mut j = 0;
+    while j < LANES {
+        a[j] = j as f32;
+        j += 1;
+    }
+    a
+};
+const J64: Lane<f64> = {
+    let mut a = [0.0; LANES];
+    let mut j = 0;
+    while j < LANES {
+        a[j] = j as f64;
+        j += 1;
+    }
+    a
+};
+
+/// `v` clamped to [0, 1] with NaN mapped to 0 (`clamp` would keep NaN).
+#[inline(always)]
+#[allow(clippy::manual_clamp)]
+fn unit_or_zero(v: f32) -> f32 {
+    v.max(0.0).min(1.0)
+}
+
+/// [`unit_or_zero`] for f64.
+#[inline(always)]
+#[allow(clippy::manual_clamp)]
+fn unit_or_zero_f64(v: f64) -> f64 {
+    v.max(0.0).min(1.0)
+}
+
+/// `floor(v)` as an integer for `v` in [0, 2²³), in plain float arithmetic that vectorizes
+/// (a saturating cast does not): adding 2²³ rounds to an integer, one step down corrects
+/// rounding up, and the integer is then read from the bits.
+#[inline(always)]
+fn floor_u32(v: f32) -> u32 {
+    const MAGIC: f32 = 8_388_608.0;
+    let r = (v + MAGIC) - MAGIC;
+    let f = if r > v { r - 1.0 } else { r };
+    (f + MAGIC).to_bits() - MAGIC.to_bits()
+}
+
+/// [`floor_u32`] for f64 and `v` in [0, 2³²).
+#[inline(always)]
+fn floor_u32_f64(v: f64) -> u32 {
+    const MAGIC: f64 = 4_503_599_627_370_496.0;
+    let r = (v + MAGIC) - MAGIC;
+    let f = if r > v { r - 1.0 } else { r };
+    ((f + MAGIC).to_bits() - MAGIC.to_bits()) as u32
+}
+/// One array per channel: r, g, b, a.
+type Channels = [Lane<f32>; 4];
+
+/// Runs the depth test over the group at `i0` against `depth`, writing passing depths when
+/// `write` is set; returns a mask per lane (all ones where the fragment passes).
+#[inline(always)]
+fn depth_test(
+    interp: &SpanInterp,
+    func: CompareFunc,
+    format: DepthFormat,
+    write: bool,
+    i0: usize,
+    depth: &mut Lane<u32>,
+) -> Lane<u32> {
+    let max = format.max() as f64;
+    let fi0 = i0 as f64;
+    let mut z = [0u32; LANES];
+    for (j, z) in z.iter_mut().enumerate() {
+        // DepthFormat::quantize of SpanInterp::z, written out so it vectorizes (NaN → 0).
+        let v = interp.z0 + interp.dz * (fi0 + J64[j]);
+        *z = floor_u32_f64(unit_or_zero_f64(v) * max + 0.5);
+    }
+    let mut pass = [0u32; LANES];
+    macro_rules! cmp {
+        ($op:tt) => {
+            for j in 0..LANES {
+                pass[j] = 0u32.wrapping_sub((z[j] $op depth[j]) as u32);
+            }
+        };
+    }
+    match func {
+        CompareFunc::Never => {}
+        CompareFunc::Less => cmp!(<),
+        CompareFunc::Equal => cmp!(==),
+        CompareFunc::LessEqual => cmp!(<=),
+        CompareFunc::Greater => cmp!(>),
+        CompareFunc::NotEqual => cmp!(!=),
+        CompareFunc::GreaterEqual => cmp!(>=),
+        CompareFunc::Always => pass = [!0; LANES],
+    }
+    if write {
+        for j in 0..LANES {
+            depth[j] = (depth[j] & !pass[j]) | (z[j] & pass[j]);
+        }
+    }
+    pass
+}
+
+/// The interpolated colors of the group at `i0`.
+#[inline(always)]
+fn colors(interp: &mut SpanInterp, i0: usize, out: &mut Channels) {
+    let fi0 = i0 as f32;
+    match interp.divide {
+        Divide::None => {
+            for (c, out) in out.iter_mut().enumerate() {
+                let (c0, dc) = (interp.c0[c], interp.dc[c]);
+                for (j, o) in out.iter_mut().enumerate() {
+                    *o = c0 + dc * (fi0 + J32[j]);
+                }
+            }
+        }
+        Divide::Exact => {
+            let mut w = [0.0f32; LANES];
+            for (j, w) in w.iter_mut().enumerate() {
+                *w = 1.0 / (interp.inv_w0 + interp.d_inv_w * (fi0 + J32[j]));
+            }
+            for (c, out) in out.iter_mut().enumerate() {
+                let (c0, dc) = (interp.c0[c], interp.dc[c]);
+                for (j, o) in out.iter_mut().enumerate() {
+                    *o = (c0 + dc * (fi0 + J32[j])) * w[j];
+                }
+            }
+        }
+        Divide::Stepped => {
+            for j in 0..LANES.min(interp.len - i0) {
+                let c = interp.color(i0 + j);
+                for k in 0..4 {
+                    out[k][j] = c[k];
+                }
+            }
+        }
+    }
+}
+
+/// The stored colors of a group as values in [0, 1] (see `decode`).
+#[inline(always)]
+fn decode_lanes(format: ColorFormat, w: &Lane<u32>, out: &mut Channels) {
+    match format {
+        ColorFormat::Rgba8888 | ColorFormat::Rgb888 => {
+            const INV_255: f32 = 1.0 / 255.0;
+            for (c, out) in out.iter_mut().enumerate() {
+                for (o, w) in out.iter_mut().zip(w) {
+                    *o = ((w >> (8 * c)) & 0xFF) as i32 as f32 * INV_255;
+                }
+            }
+        }
+        _ => {
+            for j in 0..LANES {
+                let v = decode(format, w[j]);
+                for c in 0..4 {
+                    out[c][j] = v[c];
+                }
+            }
+        }
+    }
+}
+
+/// `unorm(c, 8)` written so it vectorizes (`max` maps NaN to 0 as `unorm` does).
+#[inline(always)]
+fn unorm8(c: f32) -> u32 {
+    floor_u32(unit_or_zero(c) * 255.0 + 0.5)
+}
+
+/// Encodes a group to stored words (see `ColorFormat::encode`).
+#[inline(always)]
+fn encode_lanes(format: ColorFormat, c: &Channels) -> Lane<u32> {
+    let mut out = [0u32; LANES];
+    match format {
+        ColorFormat::Rgba8888 => {
+            for (j, o) in out.iter_mut().enumerate() {
+                *o = unorm8(c[0][j])
+                    | unorm8(c[1][j]) << 8
+                    | unorm8(c[2][j]) << 16
+                    | unorm8(c[3][j]) << 24;
+            }
+        }
+        ColorFormat::Rgb888 => {
+            for (j, o) in out.iter_mut().enumerate() {
+                *o = unorm8(c[0][j]) | unorm8(c[1][j]) << 8 | unorm8(c[2][j]) << 16 | 0xFF00_0000;
+            }
+        }
+        _ => {
+            for (j, o) in out.iter_mut().enumerate() {
+                *o = format.encode([c[0][j], c[1][j], c[2][j], c[3][j]]);
+            }
+        }
+    }
+    out
+}
+
+/// One blend factor for channel `c` of every lane (the alpha lane of `SRC_ALPHA_SATURATE`
+/// is 1), as `factors` gives it per pixel.
+#[inline(always)]
+fn factor_lanes(f: BlendFactor, c: usize, src: &Channels, dst: &Channels) -> Lane<f32> {
+    let mut out = [0.0; LANES];
+    let each = |out: &mut Lane<f32>, g: &dyn Fn(usize) -> f32| {
+        for (j, o) in out.iter_mut().enumerate() {
+            *o = g(j);
+        }
+    };
+    match f {
+        BlendFactor::Zero => {}
+        BlendFactor::One => out = [1.0; LANES],
+        BlendFactor::SrcColor => out = src[c],
+        BlendFactor::OneMinusSrcColor => each(&mut out, &|j| 1.0 - src[c][j]),
+        BlendFactor::DstColor => out = dst[c],
+        BlendFactor::OneMinusDstColor => each(&mut out, &|j| 1.0 - dst[c][j]),
+        BlendFactor::SrcAlpha => out = src[3],
+        BlendFactor::OneMinusSrcAlpha => each(&mut out, &|j| 1.0 - src[3][j]),
+        BlendFactor::DstAlpha => out = dst[3],
+        BlendFactor::OneMinusDstAlpha => each(&mut out, &|j| 1.0 - dst[3][j]),
+        BlendFactor::SrcAlphaSaturate if c == 3 => out = [1.0; LANES],
+        BlendFactor::SrcAlphaSaturate => each(&mut out, &|j| src[3][j].min(1.0 - dst[3][j])),
+    }
+    out
+}
+
+/// `blend` over a group: `src` is clamped to [0, 1] first (in place); the result replaces
+/// `dst` and is clamped by the encoder.
+#[inline(always)]
+fn blend_lanes(b: &Blend, src: &mut Channels, dst: &mut Channels) {
+    for c in src.iter_mut().flatten() {
+        *c = c.clamp(0.0, 1.0);
+    }
+    let src = &*src;
+    let mut out = [[0.0; LANES]; 4];
+    for (c, out) in out.iter_mut().enumerate() {
+        let (fs, fd, eq) = if c < 3 {
+            (b.src_rgb, b.dst_rgb, b.eq_rgb)
+        } else {
+            (b.src_alpha, b.dst_alpha, b.eq_alpha)
+        };
+        let sf = factor_lanes(fs, c, src, dst);
+        let df = factor_lanes(fd, c, src, dst);
+        let (s, d) = (&src[c], &dst[c]);
+        match eq {
+            BlendEquation::Add => {
+                for j in 0..LANES {
+                    out[j] = s[j] * sf[j] + d[j] * df[j];
+                }
+            }
+            BlendEquation::Subtract => {
+                for j in 0..LANES {
+                    out[j] = s[j] * sf[j] - d[j] * df[j];
+                }
+            }
+            BlendEquation::ReverseSubtract => {
+                for j in 0..LANES {
+                    out[j] = d[j] * df[j] - s[j] * sf[j];
+                }
+            }
+        }
+    }
+    *dst = out;
+}
+
+/// Spans shorter than this run pixel by pixel: a group costs as much as [`LANES`] pixels.
+const SHORT: usize = 6;
+
+/// The span routine for keys without alpha test, stencil, logic op or dither.
+pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
+    k: &FragmentKey,
+    t: &Shading,
+    span: Span,
+    band: &mut BandMut<'_>,
+) {
+    let mut interp = SpanInterp::new(t, span, k.perspective);
+    if interp.len < SHORT {
+        return simple_pixels::<DEPTH, SMOOTH, BLEND>(k, t, span, band, interp);
+    }
+    let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
+    let len = interp.len;
+    let flat = t.flat.unwrap_or_default();
+    if !DEPTH && !SMOOTH && !BLEND {
+        // One word for the whole span: a fill.
+        let (word, keep) = (k.color.encode(flat), k.keep);
+        for px in &mut band.color[start..start + len] {
+            *px = (*px & keep) | (word & !keep);
+        }
+        return;
+    }
+    let mut i0 = 0;
+    while i0 < len {
+        let m = (len - i0).min(LANES);
+        let at = start + i0;
+        let (color, depth) = (&mut band.color[at..at + m], &mut band.depth);
+        let depth = if DEPTH {
+            &mut depth[at..at + m]
+        } else {
+            &mut [][..]
+        };
+        if m == LANES {
+            let color = color.try_into().expect("a whole group");
+            let depth = depth.try_into().ok();
+            simple_group::<DEPTH, SMOOTH, BLEND>(k, &mut interp, flat, i0, color, depth);
+        } else {
+            let (mut c, mut d) = ([0; LANES], [0; LANES]);
+            c[..m].copy_from_slice(color);
+            d[..depth.len()].copy_from_slice(depth);
+            simple_group::<DEPTH, SMOOTH, BLEND>(k, &mut interp, flat, i0, &mut c, Some(&mut d));
+            color.copy_from_slice(&c[..m]);
+            let n = depth.len();
+            depth.copy_from_slice(&d[..n]);
+        }
+        i0 += m;
+    }
+}
+
+/// One group of [`simple`]: lanes beyond the span are computed and discarded by the caller.
+#[inline(always)]
+fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
+    k: &FragmentKey,
+    interp: &mut SpanInterp,
+    flat: [f32; 4],
+    i0: usize,
+    color: &mut Lane<u32>,
+    depth: Option<&mut Lane<u32>>,
+) {
+    let mut pass = [!0u32; LANES];
+    if DEPTH {
+        let (func, df) = k.depth.expect("DEPTH routes have a depth test");
+        let depth = depth.expect("DEPTH routes have a depth buffer");
+        pass = depth_test(interp, func, df, k.depth_write, i0, depth);
+        if pass == [0; LANES] {
+            return;
+        }
+    }
+    if k.keep == u32::MAX {
+        return;
+    }
+    let mut src: Channels = [[0.0; LANES]; 4];
+    if SMOOTH {
+        colors(interp, i0, &mut src);
+    } else {
+        src = flat.map(|c| [c; LANES]);
+    }
+    let words = if BLEND {
+        let b = k.blend.expect("BLEND routes blend");
+        let mut dst: Channels = [[0.0; LANES]; 4];
+        decode_lanes(k.color, color, &mut dst);
+        blend_lanes(&b, &mut src, &mut dst);
+        encode_lanes(k.color, &dst)
+    } else {
+        encode_lanes(k.color, &src)
+    };
+    // Written where the fragment passes, through the color mask.
+    for j in 0..LANES {
+        let write = pass[j] & !k.keep;
+        color[j] = (color[j] & !write) | (words[j] & write);
+    }
+}
+
+/// [`simple`] one pixel at a time, for short spans.
+fn simple_pixels<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
+    k: &FragmentKey,
+    t: &Shading,
+    span: Span,
+    band: &mut BandMut<'_>,
+    mut interp: SpanInterp,
+) {
+    let row = (span.y - band.y0) as usize * band.width;
+    let flat = t.flat.unwrap_or_default();
+    let write_color = k.keep != u32::MAX;
+    for (i, x) in (span.x0..span.x1).enumerate() {
+        let at = row + x as usize;
+        if DEPTH {
+            let (func, df) = k.depth.expect("DEPTH routes have a depth test");
+            let z = df.quantize(interp.z(i));
+            if !func.test(z, band.depth[at]) {
+                continue;
+            }
+            if k.depth_write {
+                band.depth[at] = z;
+            }
+        }
+        if !write_color {
+            continue;
+        }
+        let dst = band.color[at];
+        let src = if SMOOTH { interp.color(i) } else { flat };
+        let word = if BLEND {
+            let b = k.blend.expect("BLEND routes blend");
+            k.color.encode(blend(&b, src, decode(k.color, dst)))
+        } else {
+            k.color.encode(src)
+        };
+        band.color[at] = (dst & k.keep) | (word & !k.keep);
+    }
+}
+
+/// Texel-space coordinates below this magnitude take the vectorized floor; beyond it (or
+/// NaN) a group samples pixel by pixel with the scalar sampler.
+const FAST_COORD: f32 = 4_194_304.0;
+
+/// `floor(u)` as an integer and as a float for |u| < 2²², vectorizable: adding 1.5 · 2²³
+/// rounds to an integer (to nearest), one step down corrects rounding up, and the integer
+/// is the difference of the bits.
+#[inline(always)]
+fn floor_i32(u: f32) -> (i32, f32) {
+    const M: f32 = 12_582_912.0;
+    let r = (u + M) - M;
+    let f = if r > u { r - 1.0 } else { r };
+    (
+        ((f + M).to_bits() as i32).wrapping_sub(M.to_bits() as i32),
+        f,
+    )
+}
+
+/// Texture coordinates (s, t) of the group at `i0`, as `TexSpan::st` gives them.
+#[inline(always)]
+fn st_lanes(ts: &TexSpan, i0: usize) -> (Lane<f32>, Lane<f32>) {
+    let fi0 = i0 as f32;
+    let (mut s, mut t) = ([0.0; LANES], [0.0; LANES]);
+    for j in 0..LANES {
+        let fi = fi0 + J32[j];
+        s[j] = ts.s0 + ts.ds * fi;
+        t[j] = ts.t0 + ts.dt * fi;
+    }
+    if !ts.affine {
+        for j in 0..LANES {
+            let r = 1.0 / (ts.q0 + ts.dq * (fi0 + J32[j]));
+            s[j] *= r;
+            t[j] *= r;
+        }
+    }
+    (s, t)
+}
+
+/// Wrapped texel indices of integer coordinates (`Wrap::index`, one decision per group).
+#[inline(always)]
+fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
+    match wrap {
+        Wrap::Repeat => i.iter_mut().for_each(|i| *i &= n - 1),
+        Wrap::ClampToEdge => i.iter_mut().for_each(|i| *i = (*i).clamp(0, n - 1)),
+        Wrap::MirroredRepeat => i.iter_mut().for_each(|i| {
+            let m = *i & (2 * n - 1);
+            *i = if m >= n { 2 * n - 1 - m } else { m };
+        }),
+    }
+}
+
+/// Fetches texels at wrapped (x, y) and unpacks them to 0 ..= 255 per channel.
+#[inline(always)]
+fn fetch(img: &Image, x: &Lane<i32>, y: &Lane<i32>, out: &mut Channels) {
+    let w = img.width as i32;
+    let mut words = [0u32; LANES];
+    for j in 0..LANES {
+        words[j] = img.texels[(y[j] * w + x[j]) as usize];
+    }
+    for (c, out) in out.iter_mut().enumerate() {
+        for j in 0..LANES {
+            out[j] = ((words[j] >> (8 * c)) & 0xFF) as i32 as f32;
+        }
+    }
+}
+
+/// NEAREST or LINEAR samples of a group from `level` in 0 ..= 255 (`Sampler::nearest` and
+/// `Sampler::bilinear` exactly), or `false` when a coordinate is out of the fast range.
+#[inline(always)]
+fn sample_level(
+    sm: &Sampler,
+    level: usize,
+    linear: bool,
+    s: &Lane<f32>,
+    t: &Lane<f32>,
+    out: &mut Channels,
+) -> bool {
+    let img = &*sm.levels[level];
+    let (w, h) = (img.width as f32, img.height as f32);
+    let off = if linear { 0.5 } else { 0.0 };
+    let (mut u, mut v) = ([0.0f32; LANES], [0.0f32; LANES]);
+    for j in 0..LANES {
+        u[j] = s[j] * w - off;
+        v[j] = t[j] * h - off;
+    }
+    let inside = (0..LANES).all(|j| u[j].abs() < FAST_COORD && v[j].abs() < FAST_COORD);
+    if !inside {
+        return false;
+    }
+    let (mut i, mut jj) = ([0i32; LANES], [0i32; LANES]);
+    let (mut a, mut b) = ([0.0f32; LANES], [0.0f32; LANES]);
+    for j in 0..LANES {
+        let (fi, fu) = floor_i32(u[j]);
+        let (fj, fv) = floor_i32(v[j]);
+        i[j] = fi;
+        jj[j] = fj;
+        a[j] = u[j] - fu;
+        b[j] = v[j] - fv;
+    }
+    let (wi, hi) = (img.width as i32, img.height as i32);
+    if !linear {
+        wrap_lanes(sm.wrap_s, &mut i, wi);
+        wrap_lanes(sm.wrap_t, &mut jj, hi);
+        fetch(img, &i, &jj, out);
+        return true;
+    }
+    let (mut i1, mut j1) = (i.map(|i| i.wrapping_add(1)), jj.map(|j| j.wrapping_add(1)));
+    wrap_lanes(sm.wrap_s, &mut i, wi);
+    wrap_lanes(sm.wrap_s, &mut i1, wi);
+    wrap_lanes(sm.wrap_t, &mut jj, hi);
+    wrap_lanes(sm.wrap_t, &mut j1, hi);
+    let mut t00 = [[0.0; LANES]; 4];
+    let mut t10 = [[0.0; LANES]; 4];
+    let mut t01 = [[0.0; LANES]; 4];
+    let mut t11 = [[0.0; LANES]; 4];
+    fetch(img, &i, &jj, &mut t00);
+    fetch(img, &i1, &jj, &mut t10);
+    fetch(img, &i, &j1, &mut t01);
+    fetch(img, &i1, &j1, &mut t11);
+    for c in 0..4 {
+        for j in 0..LANES {
+            let top = t00[c][j] + (t10[c][j] - t00[c][j]) * a[j];
+            let bottom = t01[c][j] + (t11[c][j] - t01[c][j]) * a[j];
+            out[c][j] = top + (bottom - top) * b[j];
+        }
+    }
+    true
+}
+
+/// λ of unit 0 for the group (`SpanTex::lambda_at`): ρ² vectorized when λ is per pixel,
+/// the logarithm per lane.
+#[inline(always)]
+fn lambda_lanes(tex: &mut SpanTex, i0: usize, s: &Lane<f32>, t: &Lane<f32>) -> Lane<f32> {
+    let mut out = [0.0; LANES];
+    if !tex.stage.lod_per_pixel {
+        for j in 0..LANES.min(tex.len - i0) {
+            out[j] = tex.lambda_at(0, i0 + j, s[j], t[j]);
+        }
+        return out;
+    }
+    let ts = &tex.spans[0];
+    let fi0 = i0 as f32;
+    let mut rho2 = [0.0f32; LANES];
+    for j in 0..LANES {
+        // TexSpan::lambda, written out.
+        let r = if ts.affine {
+            1.0
+        } else {
+            1.0 / (ts.q0 + ts.dq * (fi0 + J32[j]))
+        };
+        let ux = (ts.ds - s[j] * ts.dq) * r * ts.w;
+        let vx = (ts.dt - t[j] * ts.dq) * r * ts.h;
+        let uy = (ts.sy - s[j] * ts.qy) * r * ts.w;
+        let vy = (ts.ty - t[j] * ts.qy) * r * ts.h;
+        rho2[j] = (ux * ux + vx * vx).max(uy * uy + vy * vy);
+    }
+    if rho2.iter().all(|&r| r == rho2[0]) {
+        out = [Sampler::lambda(rho2[0]); LANES];
+    } else {
+        for j in 0..LANES {
+            out[j] = Sampler::lambda(rho2[j]);
+        }
+    }
+    out
+}
+
+/// LINEAR_MIPMAP_LINEAR (`Sampler::trilinear`) over a group whose lanes all magnify or all
+/// lie between the same two levels; `false` otherwise.
+#[inline(always)]
+fn trilinear_lanes(
+    sm: &Sampler,
+    tex: &mut SpanTex,
+    i0: usize,
+    s: &Lane<f32>,
+    t: &Lane<f32>,
+    out: &mut Channels,
+) -> bool {
+    let mut lambda = lambda_lanes(tex, i0, s, t);
+    let n = LANES.min(tex.len - i0);
+    for l in lambda.iter_mut() {
+        *l += sm.lod_bias;
+    }
+    let q = sm.levels.len() - 1;
+    let lambda = &lambda[..n];
+    if lambda.iter().all(|&l| l.is_nan() || l <= sm.c) {
+        return sample_level(sm, 0, true, s, t, out);
+    }
+    if lambda.iter().all(|&l| l >= q as f32) {
+        return sample_level(sm, q, true, s, t, out);
+    }
+    let d1 = lambda[0] as usize;
+    if !lambda
+        .iter()
+        .all(|&l| l > sm.c && l < q as f32 && l as usize == d1)
+    {
+        return false;
+    }
+    let mut b: Channels = [[0.0; LANES]; 4];
+    if !sample_level(sm, d1, true, s, t, out) || !sample_level(sm, d1 + 1, true, s, t, &mut b) {
+        return false;
+    }
+    let mut f = [0.0f32; LANES];
+    for (f, l) in f.iter_mut().zip(lambda) {
+        *f = l - d1 as f32;
+    }
+    for c in 0..4 {
+        for j in 0..LANES {
+            out[c][j] += (b[c][j] - out[c][j]) * f[j];
+        }
+    }
+    true
+}
+
+/// The texture environment over a group (`texenv::apply` with `primary` = `prev`):
+/// REPLACE and MODULATE vectorized, the other modes pixel by pixel.
+#[inline(always)]
+fn texenv_lanes(env: &TexEnv, format: BaseFormat, tex: &Channels, c: &mut Channels) {
+    let (has_color, has_alpha) = (format.has_color(), format.has_alpha());
+    match env.mode {
+        EnvMode::Replace => {
+            if has_color {
+                c[..3].copy_from_slice(&tex[..3]);
+            }
+            if has_alpha {
+                c[3] = tex[3];
+            }
+        }
+        EnvMode::Modulate => {
+            if has_color {
+                for k in 0..3 {
+                    for j in 0..LANES {
+                        c[k][j] = (c[k][j] * tex[k][j]).clamp(0.0, 1.0);
+                    }
+                }
+            }
+            if has_alpha {
+                for j in 0..LANES {
+                    c[3][j] *= tex[3][j];
+                }
+            }
+        }
+        _ => {
+            for j in 0..LANES {
+                let prev = [c[0][j], c[1][j], c[2][j], c[3][j]];
+                let texel = [tex[0][j], tex[1][j], tex[2][j], tex[3][j]];
+                let out = texenv::apply(env, format, texel, prev, prev);
+                for k in 0..4 {
+                    c[k][j] = out[k];
+                }
+            }
+        }
+    }
+}
+
+/// Fog over a group (`SpanTex::fog`).
+#[inline(always)]
+fn fog_lanes(tex: &SpanTex, f: &Fog, i0: usize, c: &mut Channels) {
+    let fi0 = i0 as f32;
+    let mut factor = [0.0f32; LANES];
+    for (j, factor) in factor.iter_mut().enumerate() {
+        let fi = fi0 + J32[j];
+        *factor = (tex.fog0 + tex.dfog * fi) / (tex.inv_w0 + tex.d_inv_w * fi);
+    }
+    let d = f.end - f.start;
+    if !f.per_pixel() {
+        factor.iter_mut().for_each(|v| *v = v.clamp(0.0, 1.0));
+    } else if f.mode == FogMode::Linear && d != 0.0 {
+        for v in factor.iter_mut() {
+            let g = (f.end - *v) / d;
+            *v = if g.is_nan() { 0.0 } else { g.clamp(0.0, 1.0) };
+        }
+    } else {
+        factor.iter_mut().for_each(|v| *v = f.factor(*v));
+    }
+    for k in 0..3 {
+        let fog = f.color[k];
+        for j in 0..LANES {
+            c[k][j] = fog + (c[k][j] - fog) * factor[j];
+        }
+    }
+}
+
+/// The span routine for keys with at most one texture unit and no alpha test, stencil,
+/// logic op or dither. The depth test runs before texturing, which gives the same result
+/// (ES 1.1 §3.7: nothing between them can discard a fragment here) and skips the
+/// sampling of hidden fragments.
+pub(super) fn textured<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
+    k: &FragmentKey,
+    t: &Shading,
+    span: Span,
+    band: &mut BandMut<'_>,
+) {
+    let stage = k.tex.as_deref().expect("textured routes have a stage");
+    let mut interp = SpanInterp::new(t, span, k.perspective);
+    let mut tex = SpanTex::new(stage, t, span);
+    let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
+    let len = interp.len;
+    let mut i0 = 0;
+    while i0 < len {
+        let m = (len - i0).min(LANES);
+        let at = start + i0;
+        let (color, depth) = (&mut band.color[at..at + m], &mut band.depth);
+        let depth = if DEPTH {
+            &mut depth[at..at + m]
+        } else {
+            &mut [][..]
+        };
+        if m == LANES {
+            let color = color.try_into().expect("a whole group");
+            let depth = depth.try_into().ok();
+            textured_group::<FILTER, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, color, depth);
+        } else {
+            let (mut c, mut d) = ([0; LANES], [0; LANES]);
+            c[..m].copy_from_slice(color);
+            d[..depth.len()].copy_from_slice(depth);
+            let dd = Some(&mut d);
+            textured_group::<FILTER, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, &mut c, dd);
+            color.copy_from_slice(&c[..m]);
+            let n = depth.len();
+            depth.copy_from_slice(&d[..n]);
+        }
+        i0 += m;
+    }
+}
+
+/// One group of [`textured`]; lanes beyond the span are computed and discarded by the
+/// caller (their coordinates are extrapolated, so they may take the scalar sampler).
+#[inline(always)]
+fn textured_group<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
+    k: &FragmentKey,
+    t: &Shading,
+    interp: &mut SpanInterp,
+    tex: &mut SpanTex,
+    i0: usize,
+    color: &mut Lane<u32>,
+    depth: Option<&mut Lane<u32>>,
+) {
+    let mut pass = [!0u32; LANES];
+    if DEPTH {
+        let (func, df) = k.depth.expect("DEPTH routes have a depth test");
+        let depth = depth.expect("DEPTH routes have a depth buffer");
+        pass = depth_test(interp, func, df, k.depth_write, i0, depth);
+        if pass == [0; LANES] {
+            return;
+        }
+    }
+    if k.keep == u32::MAX {
+        return;
+    }
+    let mut c: Channels = [[0.0; LANES]; 4];
+    match t.flat {
+        Some(f) => c = f.map(|v| [v; LANES]),
+        None => colors(interp, i0, &mut c),
+    }
+    // Without planes (cannot happen for primitives set up with this state) texturing is off.
+    if FILTER != F_NONE && t.tex.is_some() {
+        let stage = tex.stage;
+        let u = &stage.units[0].1;
+        let sm = &*u.sampler;
+        let (s, tt) = st_lanes(&tex.spans[0], i0);
+        let mut texel: Channels = [[0.0; LANES]; 4];
+        let fast = match FILTER {
+            F_NEAREST => sample_level(sm, 0, false, &s, &tt, &mut texel),
+            F_BILINEAR => sample_level(sm, 0, true, &s, &tt, &mut texel),
+            F_TRILINEAR => trilinear_lanes(sm, tex, i0, &s, &tt, &mut texel),
+            _ => false,
+        };
+        if !fast {
+            for j in 0..LANES.min(interp.len - i0) {
+                let i = i0 + j;
+                let v = match FILTER {
+                    F_NEAREST => sm.nearest(0, s[j], tt[j]),
+                    F_BILINEAR => sm.bilinear(0, s[j], tt[j]),
+                    F_TRILINEAR => sm.trilinear(s[j], tt[j], tex.lambda_at(0, i, s[j], tt[j])),
+                    _ => sm.sample_255(s[j], tt[j], tex.lambda_at(0, i, s[j], tt[j])),
+                };
+                for ch in 0..4 {
+                    texel[ch][j] = v[ch];
+                }
+            }
+        }
+        const INV_255: f32 = 1.0 / 255.0;
+        for v in texel.iter_mut().flatten() {
+            *v *= INV_255;
+        }
+        texenv_lanes(&u.env, sm.format, &texel, &mut c);
+    }
+    if let Some(f) = &tex.stage.fog {
+        fog_lanes(tex, f, i0, &mut c);
+    }
+    let words = if BLEND {
+        let b = k.blend.expect("BLEND routes blend");
+        let mut dst: Channels = [[0.0; LANES]; 4];
+        decode_lanes(k.color, color, &mut dst);
+        blend_lanes(&b, &mut c, &mut dst);
+        encode_lanes(k.color, &dst)
+    } else {
+        encode_lanes(k.color, &c)
+    };
+    for j in 0..LANES {
+        let write = pass[j] & !k.keep;
+        color[j] = (color[j] & !write) | (words[j] & write);
+    }
+}
