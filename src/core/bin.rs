@@ -7,7 +7,9 @@
 //! pixels never depend on the thread count. Bands are whole rows, so each is one contiguous
 //! slice of every buffer and needs no locking.
 
-use std::sync::OnceLock;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use rayon::prelude::*;
 
 use super::fragment::FragmentKey;
 use super::raster::Prim;
@@ -21,7 +23,7 @@ pub const BAND_ROWS: u32 = 16;
 const SMALL_WORK: usize = 64;
 
 /// Pending primitives beyond which a frame flushes by itself, bounding its memory.
-const MAX_PENDING: usize = 1 << 16;
+const MAX_PENDING: usize = 1 << 12;
 
 /// The worker thread count: `GLES_CM_THREADS` if set to a positive number, otherwise every
 /// available core.
@@ -34,6 +36,25 @@ pub fn thread_count() -> usize {
             .filter(|&n| n > 0)
             .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
     })
+}
+
+/// The persistent workers for `threads` threads (built on first use per count and kept, so
+/// a flush costs no thread start and workers keep their scratch memory), or `None` when
+/// threads cannot be started, and the caller runs alone.
+pub fn pool(threads: usize) -> Option<Arc<rayon::ThreadPool>> {
+    static POOLS: Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>> = Mutex::new(Vec::new());
+    let mut pools = POOLS.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, p)) = pools.iter().find(|(n, _)| *n == threads) {
+        return Some(p.clone());
+    }
+    let p = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .thread_name(|i| format!("gles-cm-{i}"))
+        .build()
+        .ok()
+        .map(Arc::new)?;
+    pools.push((threads, p.clone()));
+    Some(p)
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -157,27 +178,20 @@ impl Frame {
         } else {
             threads.clamp(1, bands.len().max(1))
         };
-        if threads == 1 {
-            for (band, cmds) in &mut bands {
-                this.replay(band, cmds);
-            }
-        } else {
-            // Deal bands out round-robin so neighbouring (similarly loaded) bands spread
-            // over all threads.
-            let mut per_thread: Vec<Vec<(BandMut<'_>, &[Command])>> =
-                (0..threads).map(|_| Vec::new()).collect();
-            for (i, b) in bands.into_iter().enumerate() {
-                per_thread[i % threads].push(b);
-            }
-            std::thread::scope(|s| {
-                for mut work in per_thread {
-                    s.spawn(move || {
-                        for (band, cmds) in &mut work {
-                            this.replay(band, cmds);
-                        }
-                    });
+        match pool(threads).filter(|_| threads > 1) {
+            // Each band is replayed whole by whichever worker takes it, so the pixels do not
+            // depend on the scheduling.
+            Some(p) => p.install(|| {
+                bands
+                    .par_iter_mut()
+                    .with_max_len(1)
+                    .for_each(|(band, cmds)| this.replay(band, cmds))
+            }),
+            None => {
+                for (band, cmds) in &mut bands {
+                    this.replay(band, cmds);
                 }
-            });
+            }
         }
         self.prims.clear();
         self.keys.clear();

@@ -3,6 +3,8 @@
 //! [`DrawCall`] and hand it to [`render`], which runs
 //! vertex → clip → setup → raster → fragment into a [`Target`].
 
+use rayon::prelude::*;
+
 pub mod bin;
 pub mod clip;
 pub mod fixed;
@@ -35,6 +37,11 @@ pub const MAX_VIEWPORT_DIM: u32 = 8192;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OutOfMemory;
 
+/// Primitives a long draw call is cut into: each piece is transformed, set up and binned
+/// while its vertices and primitives are still in cache, and the frame may be flushed
+/// between pieces.
+const PIECE: usize = 2048;
+
 /// Transforms, clips and sets up `draw` with `state`, recording its primitives in `frame`
 /// (for a target of `frame`'s size and format) for a later [`Frame::flush`].
 pub fn record(
@@ -42,21 +49,121 @@ pub fn record(
     draw: &DrawCall<'_>,
     frame: &mut Frame,
 ) -> Result<(), OutOfMemory> {
+    record_flushing(state, draw, frame, &mut |_| {})
+}
+
+/// [`record`], calling `flush` whenever `frame` is full between pieces of the draw, so a
+/// draw of any size rasterizes from a working set that fits in cache. With several
+/// threads ([`bin::thread_count`]), consecutive pieces are transformed and set up in
+/// parallel and binned in order, so the frame is the same as with one.
+pub fn record_flushing(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    frame: &mut Frame,
+    flush: &mut dyn FnMut(&mut Frame),
+) -> Result<(), OutOfMemory> {
     let bounds = state.pixel_bounds(frame.bounds());
     if bounds.is_empty() {
         return Ok(());
     }
+    let fragment = fragment::FragmentKey::new(state, frame.format());
+    let mut key = frame.key(fragment.clone());
+    // A flush forgets the frame's keys: the piece after it registers this one again.
+    let mut make_room = |frame: &mut Frame, key: &mut u32| {
+        if frame.is_full() {
+            flush(frame);
+            *key = frame.key(fragment.clone());
+        }
+    };
+    let depth = frame.format().depth;
+    let pieces = pieces(draw);
+    let threads = bin::thread_count().min(pieces.len());
+    if threads <= 1 {
+        return record_serially(state, &pieces, frame, &mut make_room, key, bounds, depth);
+    }
+    let Some(pool) = bin::pool(threads) else {
+        return record_serially(state, &pieces, frame, &mut make_room, key, bounds, depth);
+    };
+    let collect = |piece: &DrawCall<'_>| {
+        let mut prims = Vec::with_capacity(piece.indices.len());
+        set_up(state, piece, bounds, depth, &mut |p| prims.push(p)).map(|()| prims)
+    };
+    for batch in pieces.chunks(threads) {
+        let prims: Vec<Result<Vec<raster::Prim>, OutOfMemory>> =
+            pool.install(|| batch.par_iter().with_max_len(1).map(collect).collect());
+        for piece in prims {
+            make_room(frame, &mut key);
+            for p in piece? {
+                frame.prim(p, key);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The pieces of a draw one after the other on the calling thread.
+#[allow(clippy::too_many_arguments)]
+fn record_serially(
+    state: &RenderState,
+    pieces: &[DrawCall<'_>],
+    frame: &mut Frame,
+    make_room: &mut dyn FnMut(&mut Frame, &mut u32),
+    mut key: u32,
+    bounds: Rect,
+    depth: Option<DepthFormat>,
+) -> Result<(), OutOfMemory> {
+    for piece in pieces {
+        make_room(frame, &mut key);
+        set_up(state, piece, bounds, depth, &mut |p| frame.prim(p, key))?;
+    }
+    Ok(())
+}
+
+/// `draw` cut into pieces of whole primitives. Strips overlap by two vertices and start at
+/// an even triangle, so winding and provoking vertices are unchanged; fans and loops stay
+/// whole.
+fn pieces<'a>(draw: &DrawCall<'a>) -> Vec<DrawCall<'a>> {
+    let n = draw.indices.len();
+    let (step, overlap) = match draw.primitive {
+        Primitive::Points => (PIECE, 0),
+        Primitive::Lines => (2 * PIECE, 0),
+        Primitive::LineStrip => (PIECE, 1),
+        Primitive::Triangles => (3 * PIECE, 0),
+        Primitive::TriangleStrip => (PIECE, 2),
+        Primitive::LineLoop | Primitive::TriangleFan => (n.max(1), 0),
+    };
+    let mut out = Vec::new();
+    let mut start = 0;
+    loop {
+        let end = (start + step + overlap).min(n);
+        out.push(DrawCall {
+            indices: draw.indices.sub(start, end),
+            ..*draw
+        });
+        start += step;
+        if end >= n {
+            return out;
+        }
+    }
+}
+
+/// Transforms, clips and sets up one piece, passing its primitives to `emit` in order.
+fn set_up(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    bounds: Rect,
+    depth: Option<DepthFormat>,
+    emit: &mut dyn FnMut(raster::Prim),
+) -> Result<(), OutOfMemory> {
     let vertices = vertex::run(state, draw)?;
     let user = state.clip_planes.len().min(clip::MAX_USER_PLANES);
-    let key = frame.key(fragment::FragmentKey::new(state, frame.format()));
-    let depth = frame.format().depth;
     let prim = draw.primitive;
     if prim == Primitive::Points {
         for k in 0..draw.indices.len() {
             let v = &vertices[draw.indices.get(k)];
             if clip::point(v, user) {
                 if let Some(p) = raster::point::setup(state, v, bounds) {
-                    frame.prim(raster::Prim::Point(p), key);
+                    emit(raster::Prim::Point(p));
                 }
             }
         }
@@ -65,7 +172,7 @@ pub fn record(
             let (va, vb) = (&vertices[a], &vertices[b]);
             if let Some((ca, cb)) = clip::line(va, vb, user) {
                 if let Some(l) = raster::line::setup(state, &ca, &cb, vb, bounds) {
-                    frame.prim(raster::Prim::Line(l), key);
+                    emit(raster::Prim::Line(l));
                 }
             }
         });
@@ -80,7 +187,7 @@ pub fn record(
                 for i in 1..poly.len() - 1 {
                     let tri = [&poly[0], &poly[i], &poly[i + 1]];
                     if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
-                        frame.prim(raster::Prim::Triangle(t), key);
+                        emit(raster::Prim::Triangle(t));
                     }
                 }
             });

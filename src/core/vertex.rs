@@ -123,7 +123,20 @@ pub enum Indices<'a> {
     U32(&'a [u32]),
 }
 
-impl Indices<'_> {
+impl<'a> Indices<'a> {
+    /// Positions `start .. end` of the list.
+    pub fn sub(&self, start: usize, end: usize) -> Indices<'a> {
+        match *self {
+            Indices::Range { first, .. } => Indices::Range {
+                first: first + start,
+                count: end - start,
+            },
+            Indices::U8(i) => Indices::U8(&i[start..end]),
+            Indices::U16(i) => Indices::U16(&i[start..end]),
+            Indices::U32(i) => Indices::U32(&i[start..end]),
+        }
+    }
+
     pub fn len(&self) -> usize {
         match self {
             Indices::Range { count, .. } => *count,

@@ -3,7 +3,7 @@
 use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
 use super::buffer::lock_objects;
-use super::context::{Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
+use super::context::{lock_target, Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
 use super::ffi::client_bytes;
 use super::tokens::*;
 use super::tokens_ext::*;
@@ -295,7 +295,15 @@ impl Context {
         call.point_size = point_size;
         call.matrix_index = matrix_index;
         call.weight = weight;
-        if let Some(Err(_)) = self.with_frame(|frame| core::record(&state, &call, frame)) {
+        let surface = self.draw_surface();
+        let mut flush = |frame: &mut core::Frame| {
+            if let Some(s) = &surface {
+                frame.flush(&mut lock_target(s.as_ref()), core::bin::thread_count());
+            }
+        };
+        let recorded =
+            self.with_frame(|frame| core::record_flushing(&state, &call, frame, &mut flush));
+        if let Some(Err(_)) = recorded {
             self.set_error(GL_OUT_OF_MEMORY);
         }
     }

@@ -1407,7 +1407,9 @@ fn draw_submesh(
         stats.vertices_transformed += (hi - lo + 1) as u64;
     }
     // Out of memory drops the draw (M3G has no such exception).
-    let _ = core::record(s, &call, &mut b.frame);
+    let target = &mut b.target;
+    let mut flush = |f: &mut Frame| f.flush(target, core::bin::thread_count());
+    let _ = core::record_flushing(s, &call, &mut b.frame, &mut flush);
 }
 
 fn component_type(size: i32) -> core::ComponentType {

@@ -8,7 +8,7 @@ use GLES_CM::egl::types::{
     EGLint,
 };
 use GLES_CM::gles::types::{
-    GLbitfield, GLclampf, GLenum, GLfloat, GLint, GLsizei, GLubyte, GLvoid,
+    GLbitfield, GLclampf, GLenum, GLfloat, GLint, GLsizei, GLsizeiptr, GLubyte, GLuint, GLvoid,
 };
 
 /// A library opened with `dlopen`; closed again on drop.
@@ -74,7 +74,8 @@ macro_rules! api {
     ($( $name:ident : fn($($arg:ty),*) $(-> $ret:ty)?; )*) => {
         /// The entry points, as C function pointers. Calling any of them is `unsafe`: the
         /// caller keeps the GL/EGL contracts (valid pointers, a current context for `gl*`).
-        #[allow(non_snake_case)]
+        // `bench` and `accuracy` share this file and each calls a subset.
+        #[allow(non_snake_case, dead_code)]
         pub struct Api {
             $( pub $name: unsafe extern "C" fn($($arg),*) $(-> $ret)?, )*
             // Declared last so it is dropped after the pointers (which are plain values).
@@ -145,4 +146,28 @@ api! {
     glPixelStorei: fn(GLenum, GLint);
     glFinish: fn();
     glReadPixels: fn(GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, *mut GLvoid);
+    glShadeModel: fn(GLenum);
+    glColor4f: fn(GLfloat, GLfloat, GLfloat, GLfloat);
+    glLoadIdentity: fn();
+    glDisableClientState: fn(GLenum);
+    glNormalPointer: fn(GLenum, GLsizei, *const GLvoid);
+    glTexCoordPointer: fn(GLint, GLenum, GLsizei, *const GLvoid);
+    glClientActiveTexture: fn(GLenum);
+    glActiveTexture: fn(GLenum);
+    glBindTexture: fn(GLenum, GLuint);
+    glTexImage2D: fn(GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum, *const GLvoid);
+    glTexParameteri: fn(GLenum, GLenum, GLint);
+    glTexEnvi: fn(GLenum, GLenum, GLint);
+    glTexEnvf: fn(GLenum, GLenum, GLfloat);
+    glTexEnvfv: fn(GLenum, GLenum, *const GLfloat);
+    glLightfv: fn(GLenum, GLenum, *const GLfloat);
+    glLightModelfv: fn(GLenum, *const GLfloat);
+    glMaterialfv: fn(GLenum, GLenum, *const GLfloat);
+    glMaterialf: fn(GLenum, GLenum, GLfloat);
+    glFogf: fn(GLenum, GLfloat);
+    glFogfv: fn(GLenum, *const GLfloat);
+    glGenBuffers: fn(GLsizei, *mut GLuint);
+    glBindBuffer: fn(GLenum, GLuint);
+    glBufferData: fn(GLenum, GLsizeiptr, *const GLvoid, GLenum);
+    glDrawElements: fn(GLenum, GLsizei, GLenum, *const GLvoid);
 }
