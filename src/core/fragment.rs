@@ -41,9 +41,9 @@ enum Route {
         smooth: bool,
         blend: bool,
     },
-    /// `textured<FILTER, DEPTH, BLEND>`: at most one texture unit (any environment) and
-    /// fog, no alpha test, stencil, logic op or dither. `FILTER` is one of the `F_*`
-    /// constants.
+    /// `textured<TEX, DEPTH, BLEND>`: texture units (any environment, no cube maps) and
+    /// fog, no alpha test, stencil, logic op or dither. `filter` is the first unit's `F_*`
+    /// class (`F_NONE`: fog only).
     Textured {
         filter: u8,
         depth: bool,
@@ -99,16 +99,19 @@ impl TexStage {
     /// every route that picks a level adds the bias (in [`Sampler::sample_255`] and
     /// [`Sampler::trilinear`]).
     fn filter(&self) -> u8 {
-        let Some((_, u)) = self.units.first() else {
-            return F_NONE;
-        };
-        let sm = &u.sampler;
-        match (sm.min, sm.mag) {
-            (MinFilter::Nearest, MagFilter::Nearest) => F_NEAREST,
-            (MinFilter::Linear, MagFilter::Linear) => F_BILINEAR,
-            (MinFilter::LinearMipmapLinear, MagFilter::Linear) => F_TRILINEAR,
-            _ => F_GENERAL,
-        }
+        self.units
+            .first()
+            .map_or(F_NONE, |(_, u)| filter_of(&u.sampler))
+    }
+}
+
+/// The filter class of a sampler: one of the specialized `F_*` filters, else `F_GENERAL`.
+fn filter_of(sm: &Sampler) -> u8 {
+    match (sm.min, sm.mag) {
+        (MinFilter::Nearest, MagFilter::Nearest) => F_NEAREST,
+        (MinFilter::Linear, MagFilter::Linear) => F_BILINEAR,
+        (MinFilter::LinearMipmapLinear, MagFilter::Linear) => F_TRILINEAR,
+        _ => F_GENERAL,
     }
 }
 
@@ -434,7 +437,7 @@ impl FragmentKey {
             Route::General
         } else if let Some(stage) = &key.tex {
             // Cube maps run the general routine.
-            if stage.units.len() <= 1 && stage.units.iter().all(|(_, u)| u.sampler.cube.is_none()) {
+            if stage.units.iter().all(|(_, u)| u.sampler.cube.is_none()) {
                 Route::Textured {
                     filter: stage.filter(),
                     depth: key.depth.is_some(),
@@ -481,12 +484,10 @@ impl FragmentKey {
             } => {
                 macro_rules! by_filter {
                     ($d:literal, $b:literal) => {
-                        match filter {
-                            F_NONE => textured::<F_NONE, $d, $b>(self, t, span, band),
-                            F_NEAREST => textured::<F_NEAREST, $d, $b>(self, t, span, band),
-                            F_BILINEAR => textured::<F_BILINEAR, $d, $b>(self, t, span, band),
-                            F_TRILINEAR => textured::<F_TRILINEAR, $d, $b>(self, t, span, band),
-                            _ => textured::<F_GENERAL, $d, $b>(self, t, span, band),
+                        if filter == F_NONE {
+                            textured::<false, $d, $b>(self, t, span, band)
+                        } else {
+                            textured::<true, $d, $b>(self, t, span, band)
                         }
                     };
                 }

@@ -58,7 +58,7 @@ fn unit_or_zero_f64(v: f64) -> f64 {
 fn floor_u32(v: f32) -> u32 {
     const MAGIC: f32 = 8_388_608.0;
     let r = (v + MAGIC) - MAGIC;
-    let f = if r > v { r - 1.0 } else { r };
+    let f = r - f32::from(u8::from(r > v));
     (f + MAGIC).to_bits() - MAGIC.to_bits()
 }
 
@@ -241,8 +241,10 @@ fn factor_lanes(f: BlendFactor, c: usize, src: &Channels, dst: &Channels) -> Lan
 /// `dst` and is clamped by the encoder.
 #[inline(always)]
 fn blend_lanes(b: &Blend, src: &mut Channels, dst: &mut Channels) {
-    for c in src.iter_mut().flatten() {
-        *c = c.clamp(0.0, 1.0);
+    for ch in src.iter_mut() {
+        for c in ch.iter_mut() {
+            *c = c.clamp(0.0, 1.0);
+        }
     }
     let src = &*src;
     let mut out = [[0.0; LANES]; 4];
@@ -464,10 +466,16 @@ fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
 /// Fetches texels at wrapped (x, y) and unpacks them to 0 ..= 255 per channel.
 #[inline(always)]
 fn fetch(img: &Image, x: &Lane<i32>, y: &Lane<i32>, out: &mut Channels) {
-    let w = img.width as i32;
+    // Levels are powers of two wide: a shift instead of a multiply (SSE2 has no 32-bit
+    // vector multiply).
+    let shift = img.width.trailing_zeros();
+    let texels = &img.texels[..];
+    // Wrapped coordinates are inside the level; the `min` only lets the compiler drop the
+    // bounds check (an empty level cannot be sampled).
+    let last = texels.len().saturating_sub(1);
     let mut words = [0u32; LANES];
     for j in 0..LANES {
-        words[j] = img.texels[(y[j] * w + x[j]) as usize];
+        words[j] = texels[((y[j] << shift | x[j]) as usize).min(last)];
     }
     for (c, out) in out.iter_mut().enumerate() {
         for j in 0..LANES {
@@ -530,27 +538,35 @@ fn sample_level(
     fetch(img, &i, &j1, &mut t01);
     fetch(img, &i1, &j1, &mut t11);
     for c in 0..4 {
-        for j in 0..LANES {
-            let top = t00[c][j] + (t10[c][j] - t00[c][j]) * a[j];
-            let bottom = t01[c][j] + (t11[c][j] - t01[c][j]) * a[j];
-            out[c][j] = top + (bottom - top) * b[j];
-        }
+        let top = lerp_lanes(&t00[c], &t10[c], &a);
+        let bottom = lerp_lanes(&t01[c], &t11[c], &a);
+        out[c] = lerp_lanes(&top, &bottom, &b);
     }
     true
+}
+
+/// `x + (y − x)·t` per lane.
+#[inline(always)]
+fn lerp_lanes(x: &Lane<f32>, y: &Lane<f32>, t: &Lane<f32>) -> Lane<f32> {
+    let mut out = [0.0; LANES];
+    for j in 0..LANES {
+        out[j] = x[j] + (y[j] - x[j]) * t[j];
+    }
+    out
 }
 
 /// λ of unit 0 for the group (`SpanTex::lambda_at`): ρ² vectorized when λ is per pixel,
 /// the logarithm per lane.
 #[inline(always)]
-fn lambda_lanes(tex: &mut SpanTex, i0: usize, s: &Lane<f32>, t: &Lane<f32>) -> Lane<f32> {
+fn lambda_lanes(tex: &mut SpanTex, n: usize, i0: usize, s: &Lane<f32>, t: &Lane<f32>) -> Lane<f32> {
     let mut out = [0.0; LANES];
     if !tex.stage.lod_per_pixel {
         for j in 0..LANES.min(tex.len - i0) {
-            out[j] = tex.lambda_at(0, i0 + j, s[j], t[j]);
+            out[j] = tex.lambda_at(n, i0 + j, s[j], t[j]);
         }
         return out;
     }
-    let ts = &tex.spans[0];
+    let ts = &tex.spans[n];
     let fi0 = i0 as f32;
     let mut rho2 = [0.0f32; LANES];
     for j in 0..LANES {
@@ -582,12 +598,13 @@ fn lambda_lanes(tex: &mut SpanTex, i0: usize, s: &Lane<f32>, t: &Lane<f32>) -> L
 fn trilinear_lanes(
     sm: &Sampler,
     tex: &mut SpanTex,
+    n: usize,
     i0: usize,
     s: &Lane<f32>,
     t: &Lane<f32>,
     out: &mut Channels,
 ) -> bool {
-    let mut lambda = lambda_lanes(tex, i0, s, t);
+    let mut lambda = lambda_lanes(tex, n, i0, s, t);
     let n = LANES.min(tex.len - i0);
     for l in lambda.iter_mut() {
         *l += sm.lod_bias;
@@ -623,10 +640,17 @@ fn trilinear_lanes(
     true
 }
 
-/// The texture environment over a group (`texenv::apply` with `primary` = `prev`):
+/// The texture environment over a group (`texenv::apply`; `primary` `None` means the
+/// previous color):
 /// REPLACE and MODULATE vectorized, the other modes pixel by pixel.
 #[inline(always)]
-fn texenv_lanes(env: &TexEnv, format: BaseFormat, tex: &Channels, c: &mut Channels) {
+fn texenv_lanes(
+    env: &TexEnv,
+    format: BaseFormat,
+    tex: &Channels,
+    c: &mut Channels,
+    primary: Option<&Channels>,
+) {
     let (has_color, has_alpha) = (format.has_color(), format.has_alpha());
     match env.mode {
         EnvMode::Replace => {
@@ -653,9 +677,9 @@ fn texenv_lanes(env: &TexEnv, format: BaseFormat, tex: &Channels, c: &mut Channe
         }
         _ => {
             for j in 0..LANES {
-                let prev = [c[0][j], c[1][j], c[2][j], c[3][j]];
-                let texel = [tex[0][j], tex[1][j], tex[2][j], tex[3][j]];
-                let out = texenv::apply(env, format, texel, prev, prev);
+                let at = |v: &Channels| [v[0][j], v[1][j], v[2][j], v[3][j]];
+                let prev = at(c);
+                let out = texenv::apply(env, format, at(tex), prev, primary.map_or(prev, at));
                 for k in 0..4 {
                     c[k][j] = out[k];
                 }
@@ -692,11 +716,11 @@ fn fog_lanes(tex: &SpanTex, f: &Fog, i0: usize, c: &mut Channels) {
     }
 }
 
-/// The span routine for keys with at most one texture unit and no alpha test, stencil,
-/// logic op or dither. The depth test runs before texturing, which gives the same result
+/// The span routine for textured or fogged keys without cube maps, alpha test, stencil,
+/// logic op or dither: every unit in order, then fog. The depth test runs before texturing, which gives the same result
 /// (ES 1.1 §3.7: nothing between them can discard a fragment here) and skips the
 /// sampling of hidden fragments.
-pub(super) fn textured<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
+pub(super) fn textured<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
     span: Span,
@@ -720,13 +744,13 @@ pub(super) fn textured<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
         if m == LANES {
             let color = color.try_into().expect("a whole group");
             let depth = depth.try_into().ok();
-            textured_group::<FILTER, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, color, depth);
+            textured_group::<TEX, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, color, depth);
         } else {
             let (mut c, mut d) = ([0; LANES], [0; LANES]);
             c[..m].copy_from_slice(color);
             d[..depth.len()].copy_from_slice(depth);
             let dd = Some(&mut d);
-            textured_group::<FILTER, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, &mut c, dd);
+            textured_group::<TEX, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, &mut c, dd);
             color.copy_from_slice(&c[..m]);
             let n = depth.len();
             depth.copy_from_slice(&d[..n]);
@@ -738,7 +762,7 @@ pub(super) fn textured<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
 /// One group of [`textured`]; lanes beyond the span are computed and discarded by the
 /// caller (their coordinates are extrapolated, so they may take the scalar sampler).
 #[inline(always)]
-fn textured_group<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
+fn textured_group<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
     interp: &mut SpanInterp,
@@ -765,37 +789,46 @@ fn textured_group<const FILTER: u8, const DEPTH: bool, const BLEND: bool>(
         None => colors(interp, i0, &mut c),
     }
     // Without planes (cannot happen for primitives set up with this state) texturing is off.
-    if FILTER != F_NONE && t.tex.is_some() {
+    if TEX && t.tex.is_some() {
         let stage = tex.stage;
-        let u = &stage.units[0].1;
-        let sm = &*u.sampler;
-        let (s, tt) = st_lanes(&tex.spans[0], i0);
-        let mut texel: Channels = [[0.0; LANES]; 4];
-        let fast = match FILTER {
-            F_NEAREST => sample_level(sm, 0, false, &s, &tt, &mut texel),
-            F_BILINEAR => sample_level(sm, 0, true, &s, &tt, &mut texel),
-            F_TRILINEAR => trilinear_lanes(sm, tex, i0, &s, &tt, &mut texel),
-            _ => false,
-        };
-        if !fast {
-            for j in 0..LANES.min(interp.len - i0) {
-                let i = i0 + j;
-                let v = match FILTER {
-                    F_NEAREST => sm.nearest(0, s[j], tt[j]),
-                    F_BILINEAR => sm.bilinear(0, s[j], tt[j]),
-                    F_TRILINEAR => sm.trilinear(s[j], tt[j], tex.lambda_at(0, i, s[j], tt[j])),
-                    _ => sm.sample_255(s[j], tt[j], tex.lambda_at(0, i, s[j], tt[j])),
-                };
-                for ch in 0..4 {
-                    texel[ch][j] = v[ch];
+        // The untextured color, read by COMBINE past the first unit (on the first it is
+        // the previous color).
+        let primary = (stage.units.len() > 1).then_some(c);
+        for (n, (_, u)) in stage.units.iter().enumerate() {
+            let sm = &*u.sampler;
+            let (s, tt) = st_lanes(&tex.spans[n], i0);
+            let mut texel: Channels = [[0.0; LANES]; 4];
+            let filter = filter_of(sm);
+            let fast = match filter {
+                F_NEAREST => sample_level(sm, 0, false, &s, &tt, &mut texel),
+                F_BILINEAR => sample_level(sm, 0, true, &s, &tt, &mut texel),
+                F_TRILINEAR => trilinear_lanes(sm, tex, n, i0, &s, &tt, &mut texel),
+                _ => false,
+            };
+            if !fast {
+                for j in 0..LANES.min(interp.len - i0) {
+                    let (i, s, tt) = (i0 + j, s[j], tt[j]);
+                    let v = match filter {
+                        F_NEAREST => sm.nearest(0, s, tt),
+                        F_BILINEAR => sm.bilinear(0, s, tt),
+                        F_TRILINEAR => sm.trilinear(s, tt, tex.lambda_at(n, i, s, tt)),
+                        _ => sm.sample_255(s, tt, tex.lambda_at(n, i, s, tt)),
+                    };
+                    for ch in 0..4 {
+                        texel[ch][j] = v[ch];
+                    }
                 }
             }
+            // Plain nested loops: a flattening iterator does not vectorize.
+            const INV_255: f32 = 1.0 / 255.0;
+            for ch in texel.iter_mut() {
+                for v in ch.iter_mut() {
+                    *v *= INV_255;
+                }
+            }
+            let primary = primary.as_ref().filter(|_| n > 0);
+            texenv_lanes(&u.env, sm.format, &texel, &mut c, primary);
         }
-        const INV_255: f32 = 1.0 / 255.0;
-        for v in texel.iter_mut().flatten() {
-            *v *= INV_255;
-        }
-        texenv_lanes(&u.env, sm.format, &texel, &mut c);
     }
     if let Some(f) = &tex.stage.fog {
         fog_lanes(tex, f, i0, &mut c);
