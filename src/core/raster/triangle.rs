@@ -1,35 +1,116 @@
 //! Triangle coverage: pixel centers inside the edge functions, with the top-left rule.
 //!
 //! On each row an edge function is linear in the pixel index, so the pixels it admits form
-//! one interval whose ends follow from an exact integer division; the row's span is the
-//! intersection of the three intervals. No pixel outside the span is visited.
+//! one interval whose end is a quotient of integers; the row's span is the intersection of
+//! the three intervals. The quotients are divided exactly once per triangle and then
+//! stepped from row to row with their remainders, so no pixel outside the span is visited
+//! and no row divides.
 
 use super::super::setup::Triangle;
 use super::super::target::Rect;
+use super::super::SUBPIXEL_BITS;
 use super::Span;
+
+/// ⌊n / d⌋ (with `ceil`, ⌈n / d⌉) for a numerator that grows by `dn` per row and a fixed
+/// positive `d`, kept exact with the remainder.
+#[derive(Clone, Copy)]
+struct Quotient {
+    q: i64,
+    /// The remainder of the floor tracked (of n, or of −n for `ceil`), in [0, d).
+    r: i64,
+    d: i64,
+    dq: i64,
+    dr: i64,
+    ceil: bool,
+}
+
+impl Quotient {
+    fn new(n: i64, dn: i64, d: i64, ceil: bool) -> Quotient {
+        // ⌈n/d⌉ = −⌊−n/d⌋: both cases track a floor of ±n.
+        let (n, dn) = if ceil { (-n, -dn) } else { (n, dn) };
+        Quotient {
+            q: n.div_euclid(d),
+            r: n.rem_euclid(d),
+            d,
+            dq: dn.div_euclid(d),
+            dr: dn.rem_euclid(d),
+            ceil,
+        }
+    }
+
+    #[inline]
+    fn value(&self) -> i64 {
+        if self.ceil {
+            -self.q
+        } else {
+            self.q
+        }
+    }
+
+    #[inline]
+    fn step(&mut self) {
+        self.q += self.dq;
+        self.r += self.dr;
+        if self.r >= self.d {
+            self.q += 1;
+            self.r -= self.d;
+        }
+    }
+}
+
+/// What one edge allows on a row, as a function of the pixel index k = x − x0.
+#[derive(Clone, Copy)]
+enum Bound {
+    /// k ≥ value.
+    Low(Quotient),
+    /// k < value.
+    High(Quotient),
+    /// Every pixel or none, by the sign of the edge function (`base`, growing by `dbase`).
+    Row { base: i64, dbase: i64 },
+}
 
 /// Calls `emit` for every run of pixels on rows `rows` whose centers `t` covers under the
 /// top-left rule.
 pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span)) {
     let Rect { x0, x1, .. } = t.bbox;
     let (y0, y1) = (t.bbox.y0.max(rows.start), t.bbox.y1.min(rows.end));
+    if y0 >= y1 {
+        return;
+    }
     let (ox, oy) = t.shading.origin;
-    let step = t.edges.map(|e| e.a << super::super::SUBPIXEL_BITS);
     let width = (x1 - x0) as i64;
+    let ry = (y0 - oy) as i64;
+    // E(k) = base + k·step ≥ 0 on the first row; base grows by b·ONE per row.
+    let mut bounds = t.edges.map(|e| {
+        let base = e.at_center((x0 - ox) as i64, ry) - e.bias;
+        let dbase = e.b << SUBPIXEL_BITS;
+        let step = e.a << SUBPIXEL_BITS;
+        match step {
+            // k ≥ ⌈−base / step⌉
+            s if s > 0 => Bound::Low(Quotient::new(-base, -dbase, s, true)),
+            // k ≤ ⌊base / −step⌋
+            s if s < 0 => Bound::High(Quotient::new(base, dbase, -s, false)),
+            _ => Bound::Row { base, dbase },
+        }
+    });
     for y in y0..y1 {
-        let ry = (y - oy) as i64;
-        // Pixels k = 0 .. width of the row (x = x0 + k) with E(k) = base + k·step ≥ 0.
         let (mut lo, mut hi) = (0i64, width);
-        for (e, &step) in t.edges.iter().zip(&step) {
-            let base = e.at_center((x0 - ox) as i64, ry) - e.bias;
-            if step > 0 {
-                // k ≥ ceil(−base / step)
-                lo = lo.max((-base).div_euclid(step) + i64::from((-base).rem_euclid(step) != 0));
-            } else if step < 0 {
-                // k ≤ floor(base / −step)
-                hi = hi.min(base.div_euclid(-step) + 1);
-            } else if base < 0 {
-                lo = width;
+        for b in &mut bounds {
+            match b {
+                Bound::Low(q) => {
+                    lo = lo.max(q.value());
+                    q.step();
+                }
+                Bound::High(q) => {
+                    hi = hi.min(q.value() + 1);
+                    q.step();
+                }
+                Bound::Row { base, dbase } => {
+                    if *base < 0 {
+                        lo = width;
+                    }
+                    *base += *dbase;
+                }
             }
         }
         if lo < hi {
