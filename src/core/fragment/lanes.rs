@@ -7,6 +7,8 @@
 // Lane loops index several arrays in step; that is the shape the vectorizer wants.
 #![allow(clippy::needless_range_loop)]
 
+use multiversion::multiversion;
+
 use super::*;
 use crate::core::texenv::{EnvMode, FogMode, TexEnv};
 use crate::core::texture::{BaseFormat, Image, Wrap};
@@ -282,6 +284,7 @@ fn blend_lanes(b: &Blend, src: &mut Channels, dst: &mut Channels) {
 const SHORT: usize = 6;
 
 /// The span routine for keys without alpha test, stencil, logic op or dither.
+#[multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
 pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
@@ -717,9 +720,10 @@ fn fog_lanes(tex: &SpanTex, f: &Fog, i0: usize, c: &mut Channels) {
 }
 
 /// The span routine for textured or fogged keys without cube maps, alpha test, stencil,
-/// logic op or dither: every unit in order, then fog. The depth test runs before texturing, which gives the same result
-/// (ES 1.1 §3.7: nothing between them can discard a fragment here) and skips the
-/// sampling of hidden fragments.
+/// logic op or dither: every unit in order, then fog. The depth test runs before texturing,
+/// which gives the same result (ES 1.1 §3.7: nothing between them can discard a fragment
+/// here) and skips the sampling of hidden fragments.
+#[multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
 pub(super) fn textured<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
