@@ -608,7 +608,8 @@ impl SpanInterp {
 }
 
 /// The routine for every key: each enabled operation, per pixel, in the specification's order.
-fn general(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
+#[multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
+fn general<'a>(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'a>) {
     let mut interp = SpanInterp::new(t, span, k.perspective);
     let mut tex = k.tex.as_deref().map(|stage| SpanTex::new(stage, t, span));
     let row = (span.y - band.y0) as usize * band.width;

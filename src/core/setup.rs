@@ -52,17 +52,33 @@ pub struct Plane {
     pub c: f64,
 }
 
-impl Plane {
-    /// The plane through the values `v` at the vertices. A vertex's barycentric weight at a
-    /// pixel center is `E_i / area` of the edge opposite it, which is linear in the pixel
-    /// coordinates; the plane is the weighted sum of those, exact up to f64 rounding.
-    fn through(edges: &[Edge; 3], area: f64, v: [f64; 3]) -> Plane {
-        let mut p = Plane::default();
-        for (e, v) in edges.iter().zip(v) {
+/// The barycentric weights of a triangle's vertices as planes: vertex i's weight at a pixel
+/// center is `E_i / area` of the edge opposite it, which is linear in the pixel coordinates.
+/// Worked out once per triangle, so each attribute plane costs no division.
+struct Weights([Plane; 3]);
+
+impl Weights {
+    fn new(edges: &[Edge; 3], area: f64) -> Weights {
+        Weights(edges.map(|e| {
             let (a, b, c) = (e.a as f64, e.b as f64, e.c as f64);
-            p.dx += v * a * ONE as f64 / area;
-            p.dy += v * b * ONE as f64 / area;
-            p.c += v * (a * HALF as f64 + b * HALF as f64 + c) / area;
+            Plane {
+                dx: a * ONE as f64 / area,
+                dy: b * ONE as f64 / area,
+                c: (a * HALF as f64 + b * HALF as f64 + c) / area,
+            }
+        }))
+    }
+}
+
+impl Plane {
+    /// The plane through the values `v` at the vertices: the weighted sum of the weight
+    /// planes, exact up to f64 rounding.
+    fn through(w: &Weights, v: [f64; 3]) -> Plane {
+        let mut p = Plane::default();
+        for (w, v) in w.0.iter().zip(v) {
+            p.dx += v * w.dx;
+            p.dy += v * w.dy;
+            p.c += v * w.c;
         }
         p
     }
@@ -88,7 +104,9 @@ pub struct Shading {
     pub color_w: [Plane; 4],
     /// The color when it does not vary: flat shading, points.
     pub flat: Option<[f32; 4]>,
-    pub coverage: Option<Coverage>,
+    /// Boxed: only antialiased lines and points have one, and it would make every
+    /// primitive a quarter larger.
+    pub coverage: Option<Box<Coverage>>,
     /// Texture coordinates of the enabled units (`None` when texturing is off).
     pub tex: Option<UnitPlanes>,
     /// With fog: the fog distance |z_eye| (per-pixel fog) or the fog factor (per-vertex
@@ -330,7 +348,8 @@ pub fn triangle(
         Edge::new(q[0].0, q[0].1, q[1].0, q[1].1),
     ];
     let area = area.abs() as f64;
-    let plane = |f: &dyn Fn(usize) -> f64| Plane::through(&edges, area, order.map(f));
+    let weights = Weights::new(&edges, area);
+    let plane = |f: &dyn Fn(usize) -> f64| Plane::through(&weights, order.map(f));
     let mut z_plane = plane(&|i| z[i]);
     if let (Some(o), Some(df)) = (state.polygon_offset, depth) {
         // ES 1.1 §3.5.5: factor × the larger depth slope (per pixel, in window space) plus

@@ -377,7 +377,9 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     }
 }
 
-/// [`simple`] one pixel at a time, for short spans.
+/// [`simple`] one pixel at a time, for short spans (inlined, so it takes the caller's
+/// instruction set).
+#[inline(always)]
 fn simple_pixels<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,

@@ -125,7 +125,7 @@ pub fn setup(
         };
         return (!bbox.is_empty()).then(|| Line {
             bbox,
-            shading: shading(Some(coverage)),
+            shading: shading(Some(Box::new(coverage))),
             walk: Walk::Smooth,
         });
     }

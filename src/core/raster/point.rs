@@ -43,7 +43,7 @@ pub fn setup(state: &RenderState, v: &ClipVertex, bounds: Rect) -> Option<Point>
             shape: Shape::Point { x, y, radius: r },
             samples: state.point_quality.coverage_samples(),
         };
-        (rect, Some(coverage))
+        (rect, Some(Box::new(coverage)))
     } else {
         let s = size.round().max(1.0);
         let snap = |c: f64| {
