@@ -46,6 +46,9 @@ pub struct AttribArray<'a> {
     pub normalized: bool,
 }
 
+/// An attribute's value where its array has no element: GL's default (0, 0, 0, 1).
+const DEFAULT: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
+
 impl AttribArray<'_> {
     /// The bytes an array of `count` elements with this layout needs.
     pub fn bytes_needed(ty: ComponentType, size: usize, stride: usize, count: usize) -> usize {
@@ -60,27 +63,69 @@ impl AttribArray<'_> {
     /// outside `data` give the default rather than panicking.
     #[inline]
     pub fn fetch(&self, i: usize) -> [f32; 4] {
-        let mut out = [0.0, 0.0, 0.0, 1.0];
-        let base = i * self.stride;
+        self.fetch_vec4(i).to_array()
+    }
+
+    /// [`fetch`](Self::fetch) as a vector. The vertex stage reads through this: a vector
+    /// assembled in registers, where loading one from the stored array stalls on store
+    /// forwarding.
+    #[inline]
+    pub fn fetch_vec4(&self, i: usize) -> Vec4 {
+        // Float arrays of 3 or 4 components are nearly every array a vertex reads; they get
+        // a path small enough to inline, with fixed-size loads.
+        if self.ty == ComponentType::Float && (self.size == 3 || self.size == 4) {
+            let base = i * self.stride;
+            let Some(b) = self.data.get(base..base + 4 * self.size) else {
+                return Vec4::from_array(DEFAULT);
+            };
+            let f = |k: usize| f32::from_ne_bytes([b[k], b[k + 1], b[k + 2], b[k + 3]]);
+            let w = if self.size == 4 { f(12) } else { 1.0 };
+            return Vec4::new(f(0), f(4), f(8), w);
+        }
+        Vec4::from_array(self.fetch_any(i))
+    }
+
+    #[inline(never)]
+    fn fetch_any(&self, i: usize) -> [f32; 4] {
+        let mut out = DEFAULT;
         let n = self.ty.size();
-        for (c, o) in out.iter_mut().enumerate().take(self.size) {
-            let at = base + c * n;
-            let Some(b) = self.data.get(at..at + n) else {
-                return [0.0, 0.0, 0.0, 1.0];
-            };
-            *o = match self.ty {
-                ComponentType::Float => f32::from_ne_bytes([b[0], b[1], b[2], b[3]]),
-                ComponentType::Fixed => fixed::to_f32(i32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
-                ComponentType::UnsignedByte if self.normalized => b[0] as f32 / 255.0,
-                ComponentType::UnsignedByte => b[0] as f32,
-                // Signed normalization as GL 1.x defines it: (2c + 1) / (2ⁿ − 1).
-                ComponentType::Byte if self.normalized => (2.0 * (b[0] as i8) as f32 + 1.0) / 255.0,
-                ComponentType::Byte => (b[0] as i8) as f32,
-                ComponentType::Short if self.normalized => {
-                    (2.0 * i16::from_ne_bytes([b[0], b[1]]) as f32 + 1.0) / 65535.0
+        let size = self.size.min(4);
+        let base = i * self.stride;
+        // The components are contiguous, so one check covers them all; the type is matched
+        // once per element rather than per component.
+        let Some(b) = self.data.get(base..base + size * n) else {
+            return DEFAULT;
+        };
+        let convert = |f: fn(&[u8]) -> f32, out: &mut [f32; 4]| {
+            for (o, c) in out.iter_mut().zip(b.chunks_exact(n)) {
+                *o = f(c);
+            }
+        };
+        match (self.ty, self.normalized) {
+            (ComponentType::Float, _) => {
+                for (o, c) in out.iter_mut().zip(b.chunks_exact(4)) {
+                    *o = f32::from_ne_bytes([c[0], c[1], c[2], c[3]]);
                 }
-                ComponentType::Short => i16::from_ne_bytes([b[0], b[1]]) as f32,
-            };
+            }
+            (ComponentType::Fixed, _) => {
+                for (o, c) in out.iter_mut().zip(b.chunks_exact(4)) {
+                    *o = fixed::to_f32(i32::from_ne_bytes([c[0], c[1], c[2], c[3]]));
+                }
+            }
+            (ComponentType::UnsignedByte, true) => convert(|c| c[0] as f32 / 255.0, &mut out),
+            (ComponentType::UnsignedByte, false) => convert(|c| c[0] as f32, &mut out),
+            // Signed normalization as GL 1.x defines it: (2c + 1) / (2ⁿ − 1).
+            (ComponentType::Byte, true) => {
+                convert(|c| (2.0 * (c[0] as i8) as f32 + 1.0) / 255.0, &mut out)
+            }
+            (ComponentType::Byte, false) => convert(|c| (c[0] as i8) as f32, &mut out),
+            (ComponentType::Short, true) => convert(
+                |c| (2.0 * i16::from_ne_bytes([c[0], c[1]]) as f32 + 1.0) / 65535.0,
+                &mut out,
+            ),
+            (ComponentType::Short, false) => {
+                convert(|c| i16::from_ne_bytes([c[0], c[1]]) as f32, &mut out)
+            }
         }
         out
     }
@@ -99,6 +144,14 @@ impl AttribSource<'_> {
         match self {
             AttribSource::Array(a) => a.fetch(i),
             AttribSource::Constant(c) => *c,
+        }
+    }
+
+    #[inline]
+    pub fn fetch_vec4(&self, i: usize) -> Vec4 {
+        match self {
+            AttribSource::Array(a) => a.fetch_vec4(i),
+            AttribSource::Constant(c) => Vec4::from_array(*c),
         }
     }
 }
@@ -379,7 +432,7 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     let n = draw.indices.len();
     if matches!(draw.indices, Indices::Range { .. }) || span <= n.saturating_mul(2) {
         list.try_reserve_exact(span).map_err(|_| OutOfMemory)?;
-        list.extend((lo..=hi).map(|i| stage.vertex(i)));
+        fill(&mut list, &stage, lo..=hi, span);
         return Ok(Vertices {
             list,
             map: VertexMap::Dense { base: lo },
@@ -392,11 +445,27 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     keys.dedup();
     list.try_reserve_exact(keys.len())
         .map_err(|_| OutOfMemory)?;
-    list.extend(keys.iter().map(|&i| stage.vertex(i)));
+    fill(&mut list, &stage, keys.iter().copied(), keys.len());
     Ok(Vertices {
         list,
         map: VertexMap::Sparse { keys },
     })
+}
+
+/// Appends the `count` vertices `numbers` yields to `list` (which has the room). The
+/// vertices are written in place: `ClipVertex` is too large for a returned value to be
+/// copied without a `memcpy` call per vertex.
+fn fill(
+    list: &mut Vec<ClipVertex>,
+    stage: &transform::Stage<'_, '_>,
+    numbers: impl Iterator<Item = usize>,
+    count: usize,
+) {
+    let start = list.len();
+    list.resize(start + count, ClipVertex::new(Vec4::ZERO, Vec4::ZERO));
+    for (v, i) in list[start..].iter_mut().zip(numbers) {
+        stage.write(i, v);
+    }
 }
 
 #[cfg(test)]
@@ -431,6 +500,35 @@ mod tests {
             [0.0, 0.0, 0.0, 1.0],
             "out of range reads give the default"
         );
+    }
+
+    #[test]
+    fn float_fetch_reads_three_or_four_components_and_checks_the_whole_element() {
+        let fl: Vec<u8> = [1.0f32, 2.0, 3.0, 4.0, 5.0]
+            .iter()
+            .flat_map(|v| v.to_ne_bytes())
+            .collect();
+        let a = |size| AttribArray {
+            data: &fl,
+            ty: ComponentType::Float,
+            size,
+            stride: 8,
+            normalized: false,
+        };
+        assert_eq!(a(3).fetch(0), [1.0, 2.0, 3.0, 1.0]);
+        assert_eq!(a(4).fetch(0), [1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(a(3).fetch(1), [3.0, 4.0, 5.0, 1.0]);
+        assert_eq!(
+            a(4).fetch(1),
+            [0.0, 0.0, 0.0, 1.0],
+            "last component outside"
+        );
+        assert_eq!(
+            a(2).fetch(2),
+            [0.0, 0.0, 0.0, 1.0],
+            "second component outside"
+        );
+        assert_eq!(a(1).fetch(2), [5.0, 0.0, 0.0, 1.0]);
     }
 
     #[test]

@@ -474,13 +474,17 @@ fn fetch(img: &Image, x: &Lane<i32>, y: &Lane<i32>, out: &mut Channels) {
     // Levels are powers of two wide: a shift instead of a multiply (SSE2 has no 32-bit
     // vector multiply).
     let shift = img.width.trailing_zeros();
-    let texels = &img.texels[..];
-    // Wrapped coordinates are inside the level; the `min` only lets the compiler drop the
-    // bounds check (an empty level cannot be sampled).
-    let last = texels.len().saturating_sub(1);
+    // Wrapped coordinates are inside the level; clamping to the slice's known last index
+    // lets the compiler drop the per-lane bounds check. (A complete texture has no empty
+    // level; an empty one samples as zero rather than panicking.)
+    let Some(last) = img.texels.len().checked_sub(1) else {
+        *out = [[0.0; LANES]; 4];
+        return;
+    };
+    let texels = &img.texels[..=last];
     let mut words = [0u32; LANES];
     for j in 0..LANES {
-        words[j] = texels[((y[j] << shift | x[j]) as usize).min(last)];
+        words[j] = texels[((y[j] << shift | x[j]) as u32 as usize).min(last)];
     }
     for (c, out) in out.iter_mut().enumerate() {
         for j in 0..LANES {

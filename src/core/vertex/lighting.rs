@@ -40,6 +40,26 @@ struct Prepared1 {
     position: Vec3,
     /// Spot lights: the unit spot direction and the cosine of the cutoff.
     spot: Option<(Vec3, f32)>,
+    /// Per face (front, back): the material-times-light products. The ambient and diffuse
+    /// ones are only used without color material (the vertex color replaces the material
+    /// then). They are the leftmost factors of the equation's products, so computing them
+    /// once rounds exactly as computing them per vertex.
+    ambient: [Vec4; 2],
+    diffuse: [Vec4; 2],
+    specular: [Vec4; 2],
+    /// Per face: the specular product is exactly zero in r, g and b (alpha is never read:
+    /// the lit alpha is the diffuse one) and the shininess is in (0, 64], so for n ⊙ ĥ ≤ 2
+    /// the power is finite and `0 · power` equals `0 · 1` bit for bit: `powf` can be
+    /// skipped.
+    pow_free: [bool; 2],
+}
+
+/// One face's material with what does not depend on the vertex worked out.
+#[derive(Clone, Copy, Debug)]
+struct Face {
+    material: Material,
+    /// e_cm + a_cm·a_cs, used without color material.
+    base: Vec4,
 }
 
 /// The lighting state of one draw call, ready to light vertices.
@@ -47,8 +67,7 @@ struct Prepared1 {
 pub struct Prepared {
     lights: Vec<Prepared1>,
     model_ambient: Vec4,
-    front: Material,
-    back: Material,
+    faces: [Face; 2],
     color_material: bool,
     /// The upper bound of a lit channel: 1, or the largest float when lit colors are not
     /// clamped after lighting.
@@ -86,19 +105,32 @@ impl Prepared {
                         cos_cutoff(light.spot_cutoff),
                     )
                 });
+                let faces = [&l.front, &l.back];
+                let pow_free = faces.map(|m| {
+                    (m.specular * light.specular).truncate() == Vec3::ZERO
+                        && m.shininess > 0.0
+                        && m.shininess <= 64.0
+                });
                 Prepared1 {
                     light: *light,
                     directional,
                     position,
                     spot,
+                    ambient: faces.map(|m| m.ambient * light.ambient),
+                    diffuse: faces.map(|m| m.diffuse * light.diffuse),
+                    specular: faces.map(|m| m.specular * light.specular),
+                    pow_free,
                 }
             })
             .collect();
+        let face = |m: &Material| Face {
+            material: *m,
+            base: m.emission + m.ambient * l.model_ambient,
+        };
         Prepared {
             lights,
             model_ambient: l.model_ambient,
-            front: l.front,
-            back: l.back,
+            faces: [face(&l.front), face(&l.back)],
             color_material: l.color_material,
             ceiling: if l.clamp_after_lighting {
                 1.0
@@ -110,18 +142,21 @@ impl Prepared {
 
     /// The lit color of a vertex at eye position `eye` with eye-space normal `n` (already
     /// reversed for the back face) and vertex color `color`; `back` picks the back material.
+    #[inline(always)]
     pub fn shade(&self, eye: Vec4, n: Vec3, color: Vec4, back: bool) -> Vec4 {
-        let mut m = if back { self.back } else { self.front };
-        if self.color_material {
-            m.ambient = color;
-            m.diffuse = color;
-        }
+        let f = usize::from(back);
+        let face = &self.faces[f];
+        let m = &face.material;
         let v = if eye.w == 0.0 || eye.w == 1.0 {
             eye.truncate()
         } else {
             eye.truncate() / eye.w
         };
-        let mut c = m.emission + m.ambient * self.model_ambient;
+        let mut c = if self.color_material {
+            m.emission + color * self.model_ambient
+        } else {
+            face.base
+        };
         for pl in &self.lights {
             let l = &pl.light;
             let (vp, h, att) = match pl.directional {
@@ -156,17 +191,33 @@ impl Prepared {
                 continue;
             }
             let ndotvp = n.dot(vp).max(0.0);
-            let mut sum = m.ambient * l.ambient + m.diffuse * l.diffuse * ndotvp;
+            let (ambient, diffuse) = if self.color_material {
+                (color * l.ambient, color * l.diffuse)
+            } else {
+                (pl.ambient[f], pl.diffuse[f])
+            };
+            let mut sum = ambient + diffuse * ndotvp;
             if ndotvp != 0.0 {
                 let ndoth = n.dot(h).max(0.0);
-                sum += m.specular * l.specular * ndoth.powf(m.shininess);
+                // x⁰ is 1 for every x, NaN and ∞ included, as powf defines it.
+                let power = if m.shininess == 0.0 || (pl.pow_free[f] && ndoth <= 2.0) {
+                    1.0
+                } else {
+                    ndoth.powf(m.shininess)
+                };
+                sum += pl.specular[f] * power;
             }
             let term = sum * k;
             // A saturating light (zero denominator) stays finite, so lights of opposite
             // sign cannot meet as ∞ − ∞.
             c += term.max(Vec4::splat(-f32::MAX)).min(Vec4::splat(f32::MAX));
         }
-        let c = c.truncate().extend(m.diffuse.w);
+        let alpha = if self.color_material {
+            color.w
+        } else {
+            m.diffuse.w
+        };
+        let c = c.truncate().extend(alpha);
         // max/min rather than clamp: NaN (from NaN inputs) becomes 0.
         c.max(Vec4::ZERO).min(Vec4::splat(self.ceiling))
     }

@@ -6,7 +6,7 @@
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use super::lighting::Prepared;
-use super::{AttribArray, ClipVertex, DrawCall, Primitive};
+use super::{AttribArray, AttribSource, ClipVertex, DrawCall, Primitive};
 use crate::core::clip::MAX_USER_PLANES;
 use crate::core::state::{RenderState, TexGen};
 use crate::core::TEXTURE_UNITS;
@@ -40,6 +40,17 @@ pub fn rescale_factor(n: &Mat3) -> f32 {
     }
 }
 
+/// Where one unit's texture coordinates come from, with the texture matrix left out when
+/// it is the identity.
+#[derive(Clone, Copy)]
+enum TexSource<'d> {
+    /// The current value (no array, no texgen): the same for every vertex, so transformed
+    /// once per draw, which rounds exactly as transforming it per vertex.
+    Constant(Vec4),
+    Array(AttribArray<'d>, Option<Mat4>),
+    Gen(TexGen, Option<Mat4>),
+}
+
 pub(super) struct Stage<'s, 'd> {
     state: &'s RenderState,
     draw: &'d DrawCall<'d>,
@@ -56,7 +67,7 @@ pub(super) struct Stage<'s, 'd> {
     need_eye: bool,
     /// Per palette matrix: it and its normal matrix.
     palette: Option<Vec<(Mat4, Mat3)>>,
-    tex_identity: [bool; TEXTURE_UNITS],
+    tex: [TexSource<'d>; TEXTURE_UNITS],
     points: bool,
     attenuate: bool,
     planes: usize,
@@ -96,7 +107,18 @@ impl<'s, 'd> Stage<'s, 'd> {
                 .matrix_palette
                 .as_ref()
                 .map(|p| p.iter().map(|m| (*m, normal_matrix(m))).collect()),
-            tex_identity: state.texture_matrices.map(|m| m == Mat4::IDENTITY),
+            tex: std::array::from_fn(|u| {
+                let m = state.texture_matrices[u];
+                let matrix = (m != Mat4::IDENTITY).then_some(m);
+                match (state.texgen[u], draw.texcoord[u]) {
+                    (Some(g), _) => TexSource::Gen(g, matrix),
+                    (None, AttribSource::Array(a)) => TexSource::Array(a, matrix),
+                    (None, AttribSource::Constant(c)) => {
+                        let tc = Vec4::from_array(c);
+                        TexSource::Constant(matrix.map_or(tc, |m| m * tc))
+                    }
+                }
+            }),
             points: draw.primitive == Primitive::Points,
             attenuate: state.point_params.attenuation != [1.0, 0.0, 0.0],
             planes: state.clip_planes.len().min(MAX_USER_PLANES),
@@ -107,7 +129,7 @@ impl<'s, 'd> Stage<'s, 'd> {
     /// Eye-space position and (untransformed-length) eye-space normal of vertex `i`.
     #[inline]
     fn to_eye(&self, i: usize, p: Vec4) -> (Vec4, Vec3) {
-        let n = || Vec3::from_slice(&self.draw.normal.fetch(i)[..3]);
+        let n = || self.draw.normal.fetch_vec4(i).truncate();
         let Some(palette) = &self.palette else {
             let ne = if self.need_normal {
                 self.normal * n() * self.rescale
@@ -135,8 +157,10 @@ impl<'s, 'd> Stage<'s, 'd> {
         (eye, ne)
     }
 
-    pub fn vertex(&self, i: usize) -> ClipVertex {
-        let p = Vec4::from_array(self.draw.position.fetch(i));
+    /// Runs vertex `i` into `out`, every field written.
+    #[inline]
+    pub fn write(&self, i: usize, out: &mut ClipVertex) {
+        let p = self.draw.position.fetch_vec4(i);
         // The clip position does not depend on lighting or texgen being on (GL's
         // invariance rule for multi-pass rendering): always the one product with the
         // combined matrix, except when skinning.
@@ -151,7 +175,7 @@ impl<'s, 'd> Stage<'s, 'd> {
             // and never produces NaN.
             normal = normal.normalize_or_zero();
         }
-        let given = Vec4::from_array(self.draw.color.fetch(i));
+        let given = self.draw.color.fetch_vec4(i);
         let (color, back_color) = match &self.lighting {
             Some(l) => {
                 let front = l.shade(eye, normal, given, false);
@@ -167,22 +191,23 @@ impl<'s, 'd> Stage<'s, 'd> {
                 (c, c)
             }
         };
-        let tex = std::array::from_fn(|u| {
-            let tc = match self.state.texgen[u] {
-                Some(TexGen::NormalMap) => normal.extend(1.0),
-                Some(TexGen::ReflectionMap) => {
+        let mut tex = [Vec4::ZERO; TEXTURE_UNITS];
+        for (t, src) in tex.iter_mut().zip(&self.tex) {
+            let (tc, matrix) = match *src {
+                TexSource::Constant(tc) => {
+                    *t = tc;
+                    continue;
+                }
+                TexSource::Array(a, matrix) => (a.fetch_vec4(i), matrix),
+                TexSource::Gen(TexGen::NormalMap, matrix) => (normal.extend(1.0), matrix),
+                TexSource::Gen(TexGen::ReflectionMap, matrix) => {
                     let e = eye.truncate().normalize_or_zero();
                     let n = normal.normalize_or_zero();
-                    (e - 2.0 * n * n.dot(e)).extend(1.0)
+                    ((e - 2.0 * n * n.dot(e)).extend(1.0), matrix)
                 }
-                None => Vec4::from_array(self.draw.texcoord[u].fetch(i)),
             };
-            if self.tex_identity[u] {
-                tc
-            } else {
-                self.state.texture_matrices[u] * tc
-            }
-        });
+            *t = matrix.map_or(tc, |m| m * tc);
+        }
         let point_size = if self.points {
             self.point_size(i, eye)
         } else {
@@ -202,15 +227,23 @@ impl<'s, 'd> Stage<'s, 'd> {
                 v.clamp(-f32::MAX, f32::MAX)
             };
         }
-        ClipVertex {
-            pos,
-            color,
-            back_color,
-            tex,
-            eye: eye.truncate(),
-            point_size,
-            clip_dist,
-        }
+        // Field by field (the pattern is exhaustive, so a new field cannot be missed).
+        let ClipVertex {
+            pos: out_pos,
+            color: out_color,
+            back_color: out_back_color,
+            tex: out_tex,
+            eye: out_eye,
+            point_size: out_point_size,
+            clip_dist: out_clip_dist,
+        } = out;
+        *out_pos = pos;
+        *out_color = color;
+        *out_back_color = back_color;
+        *out_tex = tex;
+        *out_eye = eye.truncate();
+        *out_point_size = point_size;
+        *out_clip_dist = clip_dist;
     }
 
     /// ES 1.1 §3.3: the size (array or state) times sqrt(1 / (a + b·d + c·d²)), d the
