@@ -454,7 +454,9 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
 
 /// Appends the `count` vertices `numbers` yields to `list` (which has the room). The
 /// vertices are written in place: `ClipVertex` is too large for a returned value to be
-/// copied without a `memcpy` call per vertex.
+/// copied without a `memcpy` call per vertex. Compiled also for AVX2 and SSE4.1 (the
+/// whole vertex computation is inlined here) and chosen at run time.
+#[multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
 fn fill(
     list: &mut Vec<ClipVertex>,
     stage: &transform::Stage<'_, '_>,

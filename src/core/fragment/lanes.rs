@@ -122,37 +122,68 @@ fn depth_test(
 
 /// The interpolated colors of the group at `i0`.
 #[inline(always)]
-fn colors(interp: &mut SpanInterp, i0: usize, out: &mut Channels) {
+fn colors(interp: &mut SpanInterp, i0: usize) -> Channels {
+    // Built as values, one whole vector per channel: arrays filled piecewise in memory and
+    // then reloaded whole stall store forwarding.
     let fi0 = i0 as f32;
+    let (c0, dc) = (interp.c0, interp.dc);
     match interp.divide {
         Divide::None => {
-            for (c, out) in out.iter_mut().enumerate() {
-                let (c0, dc) = (interp.c0[c], interp.dc[c]);
-                for (j, o) in out.iter_mut().enumerate() {
-                    *o = c0 + dc * (fi0 + J32[j]);
-                }
-            }
+            std::array::from_fn(|c| std::array::from_fn(|j| c0[c] + dc[c] * (fi0 + J32[j])))
         }
         Divide::Exact => {
-            let mut w = [0.0f32; LANES];
-            for (j, w) in w.iter_mut().enumerate() {
-                *w = 1.0 / (interp.inv_w0 + interp.d_inv_w * (fi0 + J32[j]));
-            }
-            for (c, out) in out.iter_mut().enumerate() {
-                let (c0, dc) = (interp.c0[c], interp.dc[c]);
-                for (j, o) in out.iter_mut().enumerate() {
-                    *o = (c0 + dc * (fi0 + J32[j])) * w[j];
-                }
-            }
+            let (w0, dw) = (interp.inv_w0, interp.d_inv_w);
+            let w: Lane<f32> = std::array::from_fn(|j| 1.0 / (w0 + dw * (fi0 + J32[j])));
+            std::array::from_fn(|c| {
+                std::array::from_fn(|j| (c0[c] + dc[c] * (fi0 + J32[j])) * w[j])
+            })
         }
         Divide::Stepped => {
+            let mut out = [[0.0; LANES]; 4];
             for j in 0..LANES.min(interp.len - i0) {
                 let c = interp.color(i0 + j);
                 for k in 0..4 {
                     out[k][j] = c[k];
                 }
             }
+            out
         }
+    }
+}
+
+/// The encoded words of an unblended smooth group, interpolated and encoded in one pass
+/// (no per-channel arrays in memory between the steps: storing them piecewise and
+/// reloading them whole stalls store forwarding). `None` for the stepped divide and for
+/// formats narrower than 8 bits, which take the general steps.
+#[inline(always)]
+fn smooth_words(interp: &SpanInterp, i0: usize, format: ColorFormat) -> Option<Lane<u32>> {
+    let alpha = match format {
+        ColorFormat::Rgba8888 => 0,
+        ColorFormat::Rgb888 => 0xFF00_0000,
+        _ => return None,
+    };
+    let alpha_mask = if alpha == 0 { 0xFF } else { 0 };
+    let fi0 = i0 as f32;
+    let (c0, dc) = (interp.c0, interp.dc);
+    let (w0, dw) = (interp.inv_w0, interp.d_inv_w);
+    let word = |c: [f32; 4]| {
+        unorm8(c[0])
+            | unorm8(c[1]) << 8
+            | unorm8(c[2]) << 16
+            | (unorm8(c[3]) & alpha_mask) << 24
+            | alpha
+    };
+    match interp.divide {
+        Divide::None => Some(std::array::from_fn(|j| {
+            let f = fi0 + J32[j];
+            word(std::array::from_fn(|c| c0[c] + dc[c] * f))
+        })),
+        Divide::Exact => Some(std::array::from_fn(|j| {
+            let f = fi0 + J32[j];
+            let w = 1.0 / (w0 + dw * f);
+            word(std::array::from_fn(|c| (c0[c] + dc[c] * f) * w))
+        })),
+        Divide::Stepped => None,
     }
 }
 
@@ -355,13 +386,21 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     if k.keep == u32::MAX {
         return;
     }
+    let fused = if SMOOTH && !BLEND {
+        smooth_words(interp, i0, k.color)
+    } else {
+        None
+    };
     let mut src: Channels = [[0.0; LANES]; 4];
-    if SMOOTH {
-        colors(interp, i0, &mut src);
+    if fused.is_some() {
+    } else if SMOOTH {
+        src = colors(interp, i0);
     } else {
         src = flat.map(|c| [c; LANES]);
     }
-    let words = if BLEND {
+    let words = if let Some(words) = fused {
+        words
+    } else if BLEND {
         let b = k.blend.expect("BLEND routes blend");
         let mut dst: Channels = [[0.0; LANES]; 4];
         decode_lanes(k.color, color, &mut dst);
@@ -793,11 +832,10 @@ fn textured_group<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
     if k.keep == u32::MAX {
         return;
     }
-    let mut c: Channels = [[0.0; LANES]; 4];
-    match t.flat {
-        Some(f) => c = f.map(|v| [v; LANES]),
-        None => colors(interp, i0, &mut c),
-    }
+    let mut c: Channels = match t.flat {
+        Some(f) => f.map(|v| [v; LANES]),
+        None => colors(interp, i0),
+    };
     // Without planes (cannot happen for primitives set up with this state) texturing is off.
     if TEX && t.tex.is_some() {
         let stage = tex.stage;

@@ -157,8 +157,9 @@ impl<'s, 'd> Stage<'s, 'd> {
         (eye, ne)
     }
 
-    /// Runs vertex `i` into `out`, every field written.
-    #[inline]
+    /// Runs vertex `i` into `out`, every field written (inlined into `fill`, which is
+    /// compiled per instruction set).
+    #[inline(always)]
     pub fn write(&self, i: usize, out: &mut ClipVertex) {
         let p = self.draw.position.fetch_vec4(i);
         // The clip position does not depend on lighting or texgen being on (GL's
