@@ -386,7 +386,8 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     if k.keep == u32::MAX {
         return;
     }
-    let fused = if SMOOTH && !BLEND {
+    // Measured: with a depth test in the same group the separate steps are faster.
+    let fused = if SMOOTH && !BLEND && !DEPTH {
         smooth_words(interp, i0, k.color)
     } else {
         None
