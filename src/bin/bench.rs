@@ -1204,6 +1204,7 @@ impl Report<'_> {
         for line in self.notes() {
             s += &format!("{line}\n");
         }
+        s += include_str!("bench/analysis.md");
         s
     }
 }
