@@ -392,23 +392,24 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     } else {
         None
     };
-    let mut src: Channels = [[0.0; LANES]; 4];
-    if fused.is_some() {
-    } else if SMOOTH {
-        src = colors(interp, i0);
-    } else {
-        src = flat.map(|c| [c; LANES]);
-    }
-    let words = if let Some(words) = fused {
-        words
-    } else if BLEND {
-        let b = k.blend.expect("BLEND routes blend");
-        let mut dst: Channels = [[0.0; LANES]; 4];
-        decode_lanes(k.color, color, &mut dst);
-        blend_lanes(&b, &mut src, &mut dst);
-        encode_lanes(k.color, &dst)
-    } else {
-        encode_lanes(k.color, &src)
+    let words = match fused {
+        Some(words) => words,
+        None => {
+            let mut src = if SMOOTH {
+                colors(interp, i0)
+            } else {
+                flat.map(|c| [c; LANES])
+            };
+            if BLEND {
+                let b = k.blend.expect("BLEND routes blend");
+                let mut dst: Channels = [[0.0; LANES]; 4];
+                decode_lanes(k.color, color, &mut dst);
+                blend_lanes(&b, &mut src, &mut dst);
+                encode_lanes(k.color, &dst)
+            } else {
+                encode_lanes(k.color, &src)
+            }
+        }
     };
     // Written where the fragment passes, through the color mask.
     for j in 0..LANES {
