@@ -13,7 +13,8 @@ use super::*;
 use crate::core::texenv::{EnvMode, FogMode, TexEnv};
 use crate::core::texture::{BaseFormat, Image, Wrap};
 
-/// Pixels per group: two SSE vectors of f32, short enough that short spans waste little.
+/// Pixels per group: one AVX2 vector of f32 (two SSE ones), short enough that short spans
+/// waste little.
 pub(super) const LANES: usize = 8;
 
 type Lane<T> = [T; LANES];
@@ -72,6 +73,7 @@ fn floor_u32_f64(v: f64) -> u32 {
     let f = if r > v { r - 1.0 } else { r };
     ((f + MAGIC).to_bits() - MAGIC.to_bits()) as u32
 }
+
 /// One array per channel: r, g, b, a.
 type Channels = [Lane<f32>; 4];
 
