@@ -178,7 +178,7 @@ impl Frame {
         } else {
             threads.clamp(1, bands.len().max(1))
         };
-        match pool(threads).filter(|_| threads > 1) {
+        match (threads > 1).then(|| pool(threads)).flatten() {
             // Each band is replayed whole by whichever worker takes it, so the pixels do not
             // depend on the scheduling.
             Some(p) => p.install(|| {

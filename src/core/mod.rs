@@ -78,10 +78,7 @@ pub fn record_flushing(
     let depth = frame.format().depth;
     let pieces = pieces(draw);
     let threads = bin::thread_count().min(pieces.len());
-    if threads <= 1 {
-        return record_serially(state, &pieces, frame, &mut make_room, key, bounds, depth);
-    }
-    let Some(pool) = bin::pool(threads) else {
+    let Some(pool) = (threads > 1).then(|| bin::pool(threads)).flatten() else {
         return record_serially(state, &pieces, frame, &mut make_room, key, bounds, depth);
     };
     let collect = |piece: &DrawCall<'_>| {
