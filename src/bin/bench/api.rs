@@ -2,6 +2,9 @@
 //! `dlsym`, so one binary drives our library and Mesa's through the same C API.
 
 use std::ffi::{c_void, CStr, CString};
+use std::ptr::null_mut;
+
+use GLES_CM::egl::tokens::*;
 
 use GLES_CM::egl::types::{
     EGLBoolean, EGLConfig, EGLContext, EGLDisplay, EGLNativeDisplayType, EGLSurface, EGLenum,
@@ -170,4 +173,116 @@ api! {
     glBindBuffer: fn(GLenum, GLuint);
     glBufferData: fn(GLenum, GLsizeiptr, *const GLvoid, GLenum);
     glDrawElements: fn(GLenum, GLsizei, GLenum, *const GLvoid);
+}
+
+/// An initialized display with a `width` × `height` RGBA8888 + depth 24 pbuffer and a
+/// current ES 1.x context.
+pub struct Egl {
+    display: *mut std::ffi::c_void,
+    surface: *mut std::ffi::c_void,
+    context: *mut std::ffi::c_void,
+}
+
+impl Egl {
+    pub fn new(gl: &Api, width: u32, height: u32) -> Result<Egl, String> {
+        // SAFETY: every pointer passed is valid for the call: attribute lists end in
+        // EGL_NONE, `configs` has room for the `configs.len()` entries announced, the out
+        // parameters point at live locals. Handles come from the same display.
+        unsafe {
+            let dpy = (gl.eglGetDisplay)(EGL_DEFAULT_DISPLAY);
+            if dpy.is_null() {
+                return Err(format!("eglGetDisplay: 0x{:04X}", (gl.eglGetError)()));
+            }
+            let (mut major, mut minor) = (0, 0);
+            if (gl.eglInitialize)(dpy, &mut major, &mut minor) == 0 {
+                return Err(format!("eglInitialize: 0x{:04X}", (gl.eglGetError)()));
+            }
+            (gl.eglBindAPI)(EGL_OPENGL_ES_API);
+            let attribs = [
+                EGL_SURFACE_TYPE,
+                EGL_PBUFFER_BIT,
+                EGL_RENDERABLE_TYPE,
+                EGL_OPENGL_ES_BIT,
+                EGL_RED_SIZE,
+                8,
+                EGL_GREEN_SIZE,
+                8,
+                EGL_BLUE_SIZE,
+                8,
+                EGL_ALPHA_SIZE,
+                8,
+                EGL_DEPTH_SIZE,
+                24,
+                EGL_NONE,
+            ];
+            let mut configs: Vec<EGLConfig> = vec![null_mut(); 256];
+            let mut n: EGLint = 0;
+            if (gl.eglChooseConfig)(
+                dpy,
+                attribs.as_ptr(),
+                configs.as_mut_ptr(),
+                configs.len() as EGLint,
+                &mut n,
+            ) == 0
+            {
+                return Err(format!("eglChooseConfig: 0x{:04X}", (gl.eglGetError)()));
+            }
+            // EGL sorts deeper color first (10-bit configs on Mesa): keep exact sizes, and
+            // of those the one with the least stencil.
+            let attr = |c: EGLConfig, a: EGLint| {
+                let mut v = -1;
+                (gl.eglGetConfigAttrib)(dpy, c, a, &mut v);
+                v
+            };
+            let config = configs[..n.max(0) as usize]
+                .iter()
+                .copied()
+                .filter(|&c| {
+                    [EGL_RED_SIZE, EGL_GREEN_SIZE, EGL_BLUE_SIZE, EGL_ALPHA_SIZE]
+                        .iter()
+                        .all(|&a| attr(c, a) == 8)
+                        && attr(c, EGL_DEPTH_SIZE) == 24
+                })
+                .min_by_key(|&c| attr(c, EGL_STENCIL_SIZE))
+                .ok_or("no RGBA8888 / depth 24 pbuffer config")?;
+            let size = [
+                EGL_WIDTH,
+                width as EGLint,
+                EGL_HEIGHT,
+                height as EGLint,
+                EGL_NONE,
+            ];
+            let surface = (gl.eglCreatePbufferSurface)(dpy, config, size.as_ptr());
+            if surface.is_null() {
+                return Err(format!(
+                    "eglCreatePbufferSurface: 0x{:04X}",
+                    (gl.eglGetError)()
+                ));
+            }
+            let ctx_attribs = [EGL_CONTEXT_CLIENT_VERSION, 1, EGL_NONE];
+            let context = (gl.eglCreateContext)(dpy, config, EGL_NO_CONTEXT, ctx_attribs.as_ptr());
+            if context.is_null() {
+                return Err(format!("eglCreateContext: 0x{:04X}", (gl.eglGetError)()));
+            }
+            if (gl.eglMakeCurrent)(dpy, surface, surface, context) == 0 {
+                return Err(format!("eglMakeCurrent: 0x{:04X}", (gl.eglGetError)()));
+            }
+            Ok(Egl {
+                display: dpy,
+                surface,
+                context,
+            })
+        }
+    }
+
+    /// Releases the context and surface. The display is left initialized: terminating it
+    /// as the process exits gains nothing.
+    pub fn destroy(self, gl: &Api) {
+        // SAFETY: the handles were created on this display and are released once.
+        unsafe {
+            (gl.eglMakeCurrent)(self.display, null_mut(), null_mut(), EGL_NO_CONTEXT);
+            (gl.eglDestroyContext)(self.display, self.context);
+            (gl.eglDestroySurface)(self.display, self.surface);
+        }
+    }
 }
