@@ -313,6 +313,96 @@ fn blend_lanes(b: &Blend, src: &mut Channels, dst: &mut Channels) {
     *dst = out;
 }
 
+/// Runs `$group(i0, color, depth)` over the groups of the span of `$len` pixels at
+/// `$start` in `$band`; a partial last group works on copies padded to [`LANES`], so its
+/// extra lanes are computed and discarded. `depth` is `None` only for whole groups without
+/// a depth test. A macro, not a function taking a closure: closures do not inherit the
+/// instruction set the span routines are compiled for.
+macro_rules! for_each_group {
+    ($depth_test:expr, $band:expr, $start:expr, $len:expr, |$i0:ident, $color:ident, $depth:ident| $group:expr) => {{
+        let (band, start, len): (&mut BandMut<'_>, usize, usize) = ($band, $start, $len);
+        let mut i0 = 0;
+        while i0 < len {
+            let m = (len - i0).min(LANES);
+            let at = start + i0;
+            let color = &mut band.color[at..at + m];
+            let depth = if $depth_test {
+                &mut band.depth[at..at + m]
+            } else {
+                &mut [][..]
+            };
+            if m == LANES {
+                let $i0 = i0;
+                let $color: &mut Lane<u32> = color.try_into().expect("a whole group");
+                let $depth: Option<&mut Lane<u32>> = depth.try_into().ok();
+                $group;
+            } else {
+                let (mut c, mut d) = ([0; LANES], [0; LANES]);
+                c[..m].copy_from_slice(color);
+                d[..depth.len()].copy_from_slice(depth);
+                {
+                    let $i0 = i0;
+                    let $color: &mut Lane<u32> = &mut c;
+                    let $depth: Option<&mut Lane<u32>> = Some(&mut d);
+                    $group;
+                }
+                color.copy_from_slice(&c[..m]);
+                let n = depth.len();
+                depth.copy_from_slice(&d[..n]);
+            }
+            i0 += m;
+        }
+    }};
+}
+
+/// The depth test of a group (when `DEPTH`), giving the lanes that pass, or `None` when
+/// nothing is left to write: every lane failed, or the color mask keeps every bit.
+#[inline(always)]
+fn group_pass<const DEPTH: bool>(
+    k: &FragmentKey,
+    interp: &SpanInterp,
+    i0: usize,
+    depth: Option<&mut Lane<u32>>,
+) -> Option<Lane<u32>> {
+    let mut pass = [!0u32; LANES];
+    if DEPTH {
+        let (func, df) = k.depth.expect("DEPTH routes have a depth test");
+        let depth = depth.expect("DEPTH routes have a depth buffer");
+        pass = depth_test(interp, func, df, k.depth_write, i0, depth);
+        if pass == [0; LANES] {
+            return None;
+        }
+    }
+    (k.keep != u32::MAX).then_some(pass)
+}
+
+/// The stored words of a group's fragment colors `src`, blended over `color` when `BLEND`.
+#[inline(always)]
+fn shade_words<const BLEND: bool>(
+    k: &FragmentKey,
+    color: &Lane<u32>,
+    src: &mut Channels,
+) -> Lane<u32> {
+    if BLEND {
+        let b = k.blend.expect("BLEND routes blend");
+        let mut dst: Channels = [[0.0; LANES]; 4];
+        decode_lanes(k.color, color, &mut dst);
+        blend_lanes(&b, src, &mut dst);
+        encode_lanes(k.color, &dst)
+    } else {
+        encode_lanes(k.color, src)
+    }
+}
+
+/// Writes `words` where the fragment passes, through the color mask.
+#[inline(always)]
+fn store(k: &FragmentKey, color: &mut Lane<u32>, pass: &Lane<u32>, words: &Lane<u32>) {
+    for j in 0..LANES {
+        let write = pass[j] & !k.keep;
+        color[j] = (color[j] & !write) | (words[j] & write);
+    }
+}
+
 /// Spans shorter than this run pixel by pixel: a group costs as much as [`LANES`] pixels.
 const SHORT: usize = 6;
 
@@ -339,31 +429,9 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
         }
         return;
     }
-    let mut i0 = 0;
-    while i0 < len {
-        let m = (len - i0).min(LANES);
-        let at = start + i0;
-        let (color, depth) = (&mut band.color[at..at + m], &mut band.depth);
-        let depth = if DEPTH {
-            &mut depth[at..at + m]
-        } else {
-            &mut [][..]
-        };
-        if m == LANES {
-            let color = color.try_into().expect("a whole group");
-            let depth = depth.try_into().ok();
-            simple_group::<DEPTH, SMOOTH, BLEND>(k, &mut interp, flat, i0, color, depth);
-        } else {
-            let (mut c, mut d) = ([0; LANES], [0; LANES]);
-            c[..m].copy_from_slice(color);
-            d[..depth.len()].copy_from_slice(depth);
-            simple_group::<DEPTH, SMOOTH, BLEND>(k, &mut interp, flat, i0, &mut c, Some(&mut d));
-            color.copy_from_slice(&c[..m]);
-            let n = depth.len();
-            depth.copy_from_slice(&d[..n]);
-        }
-        i0 += m;
-    }
+    for_each_group!(DEPTH, band, start, len, |i0, color, depth| {
+        simple_group::<DEPTH, SMOOTH, BLEND>(k, &mut interp, flat, i0, color, depth)
+    });
 }
 
 /// One group of [`simple`]: lanes beyond the span are computed and discarded by the caller.
@@ -376,18 +444,9 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     color: &mut Lane<u32>,
     depth: Option<&mut Lane<u32>>,
 ) {
-    let mut pass = [!0u32; LANES];
-    if DEPTH {
-        let (func, df) = k.depth.expect("DEPTH routes have a depth test");
-        let depth = depth.expect("DEPTH routes have a depth buffer");
-        pass = depth_test(interp, func, df, k.depth_write, i0, depth);
-        if pass == [0; LANES] {
-            return;
-        }
-    }
-    if k.keep == u32::MAX {
+    let Some(pass) = group_pass::<DEPTH>(k, interp, i0, depth) else {
         return;
-    }
+    };
     // Measured: with a depth test in the same group the separate steps are faster.
     let fused = if SMOOTH && !BLEND && !DEPTH {
         smooth_words(interp, i0, k.color)
@@ -402,22 +461,10 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
             } else {
                 flat.map(|c| [c; LANES])
             };
-            if BLEND {
-                let b = k.blend.expect("BLEND routes blend");
-                let mut dst: Channels = [[0.0; LANES]; 4];
-                decode_lanes(k.color, color, &mut dst);
-                blend_lanes(&b, &mut src, &mut dst);
-                encode_lanes(k.color, &dst)
-            } else {
-                encode_lanes(k.color, &src)
-            }
+            shade_words::<BLEND>(k, color, &mut src)
         }
     };
-    // Written where the fragment passes, through the color mask.
-    for j in 0..LANES {
-        let write = pass[j] & !k.keep;
-        color[j] = (color[j] & !write) | (words[j] & write);
-    }
+    store(k, color, &pass, &words);
 }
 
 /// [`simple`] one pixel at a time, for short spans (inlined, so it takes the caller's
@@ -784,32 +831,9 @@ pub(super) fn textured<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
     let mut tex = SpanTex::new(stage, t, span);
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
-    let mut i0 = 0;
-    while i0 < len {
-        let m = (len - i0).min(LANES);
-        let at = start + i0;
-        let (color, depth) = (&mut band.color[at..at + m], &mut band.depth);
-        let depth = if DEPTH {
-            &mut depth[at..at + m]
-        } else {
-            &mut [][..]
-        };
-        if m == LANES {
-            let color = color.try_into().expect("a whole group");
-            let depth = depth.try_into().ok();
-            textured_group::<TEX, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, color, depth);
-        } else {
-            let (mut c, mut d) = ([0; LANES], [0; LANES]);
-            c[..m].copy_from_slice(color);
-            d[..depth.len()].copy_from_slice(depth);
-            let dd = Some(&mut d);
-            textured_group::<TEX, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, &mut c, dd);
-            color.copy_from_slice(&c[..m]);
-            let n = depth.len();
-            depth.copy_from_slice(&d[..n]);
-        }
-        i0 += m;
-    }
+    for_each_group!(DEPTH, band, start, len, |i0, color, depth| {
+        textured_group::<TEX, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, color, depth)
+    });
 }
 
 /// One group of [`textured`]; lanes beyond the span are computed and discarded by the
@@ -824,18 +848,9 @@ fn textured_group<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
     color: &mut Lane<u32>,
     depth: Option<&mut Lane<u32>>,
 ) {
-    let mut pass = [!0u32; LANES];
-    if DEPTH {
-        let (func, df) = k.depth.expect("DEPTH routes have a depth test");
-        let depth = depth.expect("DEPTH routes have a depth buffer");
-        pass = depth_test(interp, func, df, k.depth_write, i0, depth);
-        if pass == [0; LANES] {
-            return;
-        }
-    }
-    if k.keep == u32::MAX {
+    let Some(pass) = group_pass::<DEPTH>(k, interp, i0, depth) else {
         return;
-    }
+    };
     let mut c: Channels = match t.flat {
         Some(f) => f.map(|v| [v; LANES]),
         None => colors(interp, i0),
@@ -885,17 +900,6 @@ fn textured_group<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
     if let Some(f) = &tex.stage.fog {
         fog_lanes(tex, f, i0, &mut c);
     }
-    let words = if BLEND {
-        let b = k.blend.expect("BLEND routes blend");
-        let mut dst: Channels = [[0.0; LANES]; 4];
-        decode_lanes(k.color, color, &mut dst);
-        blend_lanes(&b, &mut c, &mut dst);
-        encode_lanes(k.color, &dst)
-    } else {
-        encode_lanes(k.color, &c)
-    };
-    for j in 0..LANES {
-        let write = pass[j] & !k.keep;
-        color[j] = (color[j] & !write) | (words[j] & write);
-    }
+    let words = shade_words::<BLEND>(k, color, &mut c);
+    store(k, color, &pass, &words);
 }
