@@ -54,18 +54,8 @@ fn unit_or_zero_f64(v: f64) -> f64 {
     v.max(0.0).min(1.0)
 }
 
-/// `floor(v)` as an integer for `v` in [0, 2²³), in plain float arithmetic that vectorizes
-/// (a saturating cast does not): adding 2²³ rounds to an integer, one step down corrects
-/// rounding up, and the integer is then read from the bits.
-#[inline(always)]
-fn floor_u32(v: f32) -> u32 {
-    const MAGIC: f32 = 8_388_608.0;
-    let r = (v + MAGIC) - MAGIC;
-    let f = r - f32::from(u8::from(r > v));
-    (f + MAGIC).to_bits() - MAGIC.to_bits()
-}
-
-/// [`floor_u32`] for f64 and `v` in [0, 2³²).
+/// `floor(v)` as an integer for `v` in [0, 2³²), in plain f64 arithmetic that vectorizes
+/// (a saturating cast does not); see [`floor_i32`].
 #[inline(always)]
 fn floor_u32_f64(v: f64) -> u32 {
     const MAGIC: f64 = 4_503_599_627_370_496.0;
@@ -215,7 +205,7 @@ fn decode_lanes(format: ColorFormat, w: &Lane<u32>, out: &mut Channels) {
 /// `unorm(c, 8)` written so it vectorizes (`max` maps NaN to 0 as `unorm` does).
 #[inline(always)]
 fn unorm8(c: f32) -> u32 {
-    floor_u32(unit_or_zero(c) * 255.0 + 0.5)
+    floor_i32(unit_or_zero(c) * 255.0 + 0.5).0 as u32
 }
 
 /// Encodes a group to stored words (see `ColorFormat::encode`).
@@ -548,13 +538,15 @@ fn st_lanes(ts: &TexSpan, i0: usize) -> (Lane<f32>, Lane<f32>) {
 /// Wrapped texel indices of integer coordinates (`Wrap::index`, one decision per group).
 #[inline(always)]
 fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
+    // One match per group: `wrap` is the same for every lane.
     match wrap {
-        Wrap::Repeat => i.iter_mut().for_each(|i| *i &= n - 1),
-        Wrap::ClampToEdge => i.iter_mut().for_each(|i| *i = (*i).clamp(0, n - 1)),
-        Wrap::MirroredRepeat => i.iter_mut().for_each(|i| {
-            let m = *i & (2 * n - 1);
-            *i = if m >= n { 2 * n - 1 - m } else { m };
-        }),
+        Wrap::Repeat => i.iter_mut().for_each(|i| *i = Wrap::Repeat.index(*i, n)),
+        Wrap::ClampToEdge => i
+            .iter_mut()
+            .for_each(|i| *i = Wrap::ClampToEdge.index(*i, n)),
+        Wrap::MirroredRepeat => i
+            .iter_mut()
+            .for_each(|i| *i = Wrap::MirroredRepeat.index(*i, n)),
     }
 }
 
