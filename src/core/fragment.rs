@@ -61,8 +61,10 @@ const F_NEAREST: u8 = 1;
 const F_BILINEAR: u8 = 2;
 /// LINEAR_MIPMAP_LINEAR with LINEAR magnification.
 const F_TRILINEAR: u8 = 3;
-/// Any other filter pair, through [`Sampler::sample_255`].
-const F_GENERAL: u8 = 4;
+/// Any other filter pair: λ picks the filter and the levels.
+const F_LOD: u8 = 4;
+/// More than one unit: each unit's filter is chosen per group.
+const F_MULTI: u8 = 5;
 
 /// Texturing and fog for a draw call: the enabled units (index and state) in order, fog,
 /// and where the level of detail is computed.
@@ -93,25 +95,26 @@ impl TexStage {
         })
     }
 
-    /// The specialized filter for a single unit, or for none. F_NEAREST and F_BILINEAR
-    /// skip λ: their minification and magnification filters are the same filter on level
-    /// 0, so no λ, whatever the `EXT_texture_lod_bias` bias, changes what they sample;
-    /// every route that picks a level adds the bias (in [`Sampler::sample_255`] and
-    /// [`Sampler::trilinear`]).
+    /// The filter class of a single unit, `F_NONE` for none, `F_MULTI` for more. F_NEAREST
+    /// and F_BILINEAR skip λ: their minification and magnification filters are the same
+    /// filter on level 0, so no λ, whatever the `EXT_texture_lod_bias` bias, changes what
+    /// they sample; every route that picks a level adds the bias.
     fn filter(&self) -> u8 {
-        self.units
-            .first()
-            .map_or(F_NONE, |(_, u)| filter_of(&u.sampler))
+        match &self.units[..] {
+            [] => F_NONE,
+            [(_, u)] => filter_of(&u.sampler),
+            _ => F_MULTI,
+        }
     }
 }
 
-/// The filter class of a sampler: one of the specialized `F_*` filters, else `F_GENERAL`.
+/// The filter class of a sampler.
 fn filter_of(sm: &Sampler) -> u8 {
     match (sm.min, sm.mag) {
         (MinFilter::Nearest, MagFilter::Nearest) => F_NEAREST,
         (MinFilter::Linear, MagFilter::Linear) => F_BILINEAR,
         (MinFilter::LinearMipmapLinear, MagFilter::Linear) => F_TRILINEAR,
-        _ => F_GENERAL,
+        _ => F_LOD,
     }
 }
 
@@ -484,10 +487,13 @@ impl FragmentKey {
             } => {
                 macro_rules! by_filter {
                     ($d:literal, $b:literal) => {
-                        if filter == F_NONE {
-                            textured::<false, $d, $b>(self, t, span, band)
-                        } else {
-                            textured::<true, $d, $b>(self, t, span, band)
+                        match filter {
+                            F_NONE => textured::<F_NONE, $d, $b>(self, t, span, band),
+                            F_NEAREST => textured::<F_NEAREST, $d, $b>(self, t, span, band),
+                            F_BILINEAR => textured::<F_BILINEAR, $d, $b>(self, t, span, band),
+                            F_TRILINEAR => textured::<F_TRILINEAR, $d, $b>(self, t, span, band),
+                            F_LOD => textured::<F_LOD, $d, $b>(self, t, span, band),
+                            _ => textured::<F_MULTI, $d, $b>(self, t, span, band),
                         }
                     };
                 }

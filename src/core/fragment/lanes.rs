@@ -11,7 +11,10 @@ use multiversion::multiversion;
 
 use super::*;
 use crate::core::texenv::{EnvMode, FogMode, TexEnv};
-use crate::core::texture::{BaseFormat, Image, Wrap};
+use crate::core::texture::{BaseFormat, MagFilter, MinFilter, Wrap};
+
+/// Texels are unpacked to 0 ..= 255 and filtered there, then scaled to 0 ..= 1.
+const INV_255: f32 = 1.0 / 255.0;
 
 /// Pixels per group: one AVX2 vector of f32 (two SSE ones), short enough that short spans
 /// waste little.
@@ -130,17 +133,22 @@ fn colors(interp: &mut SpanInterp, i0: usize) -> Channels {
                 std::array::from_fn(|j| (c0[c] + dc[c] * (fi0 + J32[j])) * w[j])
             })
         }
-        Divide::Stepped => {
-            let mut out = [[0.0; LANES]; 4];
-            for j in 0..LANES.min(interp.len - i0) {
-                let c = interp.color(i0 + j);
-                for k in 0..4 {
-                    out[k][j] = c[k];
-                }
-            }
-            out
+        Divide::Stepped => colors_by_pixel(interp, i0),
+    }
+}
+
+/// [`colors`] under the stepped divide, pixel by pixel. Out of line: inlined, its
+/// pixel-major writes lead the vectorizer to run the whole group routine pixel-major.
+#[inline(never)]
+fn colors_by_pixel(interp: &mut SpanInterp, i0: usize) -> Channels {
+    let mut out = [[0.0; LANES]; 4];
+    for j in 0..LANES.min(interp.len - i0) {
+        let c = interp.color(i0 + j);
+        for k in 0..4 {
+            out[k][j] = c[k];
         }
     }
+    out
 }
 
 /// The encoded words of an unblended smooth group, interpolated and encoded in one pass
@@ -184,7 +192,6 @@ fn smooth_words(interp: &SpanInterp, i0: usize, format: ColorFormat) -> Option<L
 fn decode_lanes(format: ColorFormat, w: &Lane<u32>, out: &mut Channels) {
     match format {
         ColorFormat::Rgba8888 | ColorFormat::Rgb888 => {
-            const INV_255: f32 = 1.0 / 255.0;
             for (c, out) in out.iter_mut().enumerate() {
                 for (o, w) in out.iter_mut().zip(w) {
                     *o = ((w >> (8 * c)) & 0xFF) as i32 as f32 * INV_255;
@@ -226,13 +233,16 @@ fn encode_lanes(format: ColorFormat, c: &Channels) -> Lane<u32> {
                 *o = unorm8(c[0][j]) | unorm8(c[1][j]) << 8 | unorm8(c[2][j]) << 16 | 0xFF00_0000;
             }
         }
-        _ => {
-            for (j, o) in out.iter_mut().enumerate() {
-                *o = format.encode([c[0][j], c[1][j], c[2][j], c[3][j]]);
-            }
-        }
+        _ => out = encode_by_pixel(format, c),
     }
     out
+}
+
+/// [`encode_lanes`] for the formats narrower than 8 bits, pixel by pixel (out of line, as
+/// [`colors_by_pixel`]).
+#[inline(never)]
+fn encode_by_pixel(format: ColorFormat, c: &Channels) -> Lane<u32> {
+    std::array::from_fn(|j| format.encode([c[0][j], c[1][j], c[2][j], c[3][j]]))
 }
 
 /// One blend factor for channel `c` of every lane (the alpha lane of `SRC_ALPHA_SATURATE`
@@ -515,11 +525,12 @@ fn floor_i32(u: f32) -> (i32, f32) {
     )
 }
 
-/// Texture coordinates (s, t) of the group at `i0`, as `TexSpan::st` gives them.
+/// Texture coordinates (s, t) of the group at `i0`, as `TexSpan::st` gives them, and the
+/// reciprocal of q/w they were divided by (1 on affine spans, where nothing is divided).
 #[inline(always)]
-fn st_lanes(ts: &TexSpan, i0: usize) -> (Lane<f32>, Lane<f32>) {
+fn st_lanes(ts: &TexSpan, i0: usize) -> (Lane<f32>, Lane<f32>, Lane<f32>) {
     let fi0 = i0 as f32;
-    let (mut s, mut t) = ([0.0; LANES], [0.0; LANES]);
+    let (mut s, mut t, mut r) = ([0.0; LANES], [0.0; LANES], [1.0; LANES]);
     for j in 0..LANES {
         let fi = fi0 + J32[j];
         s[j] = ts.s0 + ts.ds * fi;
@@ -527,12 +538,12 @@ fn st_lanes(ts: &TexSpan, i0: usize) -> (Lane<f32>, Lane<f32>) {
     }
     if !ts.affine {
         for j in 0..LANES {
-            let r = 1.0 / (ts.q0 + ts.dq * (fi0 + J32[j]));
-            s[j] *= r;
-            t[j] *= r;
+            r[j] = 1.0 / (ts.q0 + ts.dq * (fi0 + J32[j]));
+            s[j] *= r[j];
+            t[j] *= r[j];
         }
     }
-    (s, t)
+    (s, t, r)
 }
 
 /// Wrapped texel indices of integer coordinates (`Wrap::index`, one decision per group).
@@ -550,38 +561,48 @@ fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
     }
 }
 
-/// Fetches texels at wrapped (x, y) and unpacks them to 0 ..= 255 per channel.
+/// The texel words at wrapped (x, y) of a level with at least one texel.
 #[inline(always)]
-fn fetch(img: &Image, x: &Lane<i32>, y: &Lane<i32>, out: &mut Channels) {
-    // Levels are powers of two wide: a shift instead of a multiply (SSE2 has no 32-bit
-    // vector multiply).
-    let shift = img.width.trailing_zeros();
-    // Wrapped coordinates are inside the level; clamping to the slice's known last index
-    // lets the compiler drop the per-lane bounds check. (A complete texture has no empty
-    // level; an empty one samples as zero rather than panicking.)
-    let Some(last) = img.texels.len().checked_sub(1) else {
-        *out = [[0.0; LANES]; 4];
-        return;
-    };
-    let texels = &img.texels[..=last];
-    let mut words = [0u32; LANES];
+fn fetch(texels: &[u32], shift: u32, x: &Lane<i32>, y: &Lane<i32>) -> Lane<u32> {
+    // Wrapped coordinates are inside the level; clamping to the slice's last index lets
+    // the compiler drop the per-lane bounds check.
+    let last = texels.len() - 1;
+    let mut words = [0; LANES];
     for j in 0..LANES {
         words[j] = texels[((y[j] << shift | x[j]) as u32 as usize).min(last)];
     }
-    for (c, out) in out.iter_mut().enumerate() {
-        for j in 0..LANES {
-            out[j] = ((words[j] >> (8 * c)) & 0xFF) as i32 as f32;
-        }
-    }
+    words
 }
 
-/// NEAREST or LINEAR samples of a group from `level` in 0 ..= 255 (`Sampler::nearest` and
-/// `Sampler::bilinear` exactly), or `false` when a coordinate is out of the fast range.
+/// 4, the channels of a texel, as a value the optimizer cannot see. Unpacking and
+/// filtering loop over the channels; unrolled (which a known count of 4 invites), the four
+/// channels of one pixel look alike and the vectorizer packs them into one vector, pixel
+/// by pixel, instead of packing the group's pixels channel by channel: measured 2× the
+/// instructions.
+#[inline(always)]
+fn channel_count() -> usize {
+    std::hint::black_box(4)
+}
+
+/// Channel `c` of texel words, in 0 ..= 255.
+#[inline(always)]
+fn unpack(words: &Lane<u32>, c: usize) -> Lane<f32> {
+    let mut out = [0.0; LANES];
+    for j in 0..LANES {
+        out[j] = ((words[j] >> (8 * c)) & 0xFF) as i32 as f32;
+    }
+    out
+}
+
+/// NEAREST or LINEAR samples of a group from `level` (`Sampler::nearest` and
+/// `Sampler::bilinear` exactly, in 0 ..= 255) times `scale`, or `false` when a coordinate is
+/// out of the fast range.
 #[inline(always)]
 fn sample_level(
     sm: &Sampler,
     level: usize,
     linear: bool,
+    scale: f32,
     s: &Lane<f32>,
     t: &Lane<f32>,
     out: &mut Channels,
@@ -594,8 +615,7 @@ fn sample_level(
         u[j] = s[j] * w - off;
         v[j] = t[j] * h - off;
     }
-    let inside = (0..LANES).all(|j| u[j].abs() < FAST_COORD && v[j].abs() < FAST_COORD);
-    if !inside {
+    if !every(&u, |u| u.abs() < FAST_COORD) || !every(&v, |v| v.abs() < FAST_COORD) {
         return false;
     }
     let (mut i, mut jj) = ([0i32; LANES], [0i32; LANES]);
@@ -608,11 +628,21 @@ fn sample_level(
         a[j] = u[j] - fu;
         b[j] = v[j] - fv;
     }
+    // Levels are powers of two wide: a shift instead of a multiply (SSE2 has no 32-bit
+    // vector multiply). A complete texture has no empty level; an empty one takes the
+    // scalar sampler, which samples zero.
+    let (texels, shift) = (&img.texels[..], img.width.trailing_zeros());
+    if texels.is_empty() {
+        return false;
+    }
     let (wi, hi) = (img.width as i32, img.height as i32);
     if !linear {
         wrap_lanes(sm.wrap_s, &mut i, wi);
         wrap_lanes(sm.wrap_t, &mut jj, hi);
-        fetch(img, &i, &jj, out);
+        let words = fetch(texels, shift, &i, &jj);
+        for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
+            *out = scaled(unpack(&words, c), scale);
+        }
         return true;
     }
     let (mut i1, mut j1) = (i.map(|i| i.wrapping_add(1)), jj.map(|j| j.wrapping_add(1)));
@@ -620,20 +650,33 @@ fn sample_level(
     wrap_lanes(sm.wrap_s, &mut i1, wi);
     wrap_lanes(sm.wrap_t, &mut jj, hi);
     wrap_lanes(sm.wrap_t, &mut j1, hi);
-    let mut t00 = [[0.0; LANES]; 4];
-    let mut t10 = [[0.0; LANES]; 4];
-    let mut t01 = [[0.0; LANES]; 4];
-    let mut t11 = [[0.0; LANES]; 4];
-    fetch(img, &i, &jj, &mut t00);
-    fetch(img, &i1, &jj, &mut t10);
-    fetch(img, &i, &j1, &mut t01);
-    fetch(img, &i1, &j1, &mut t11);
-    for c in 0..4 {
-        let top = lerp_lanes(&t00[c], &t10[c], &a);
-        let bottom = lerp_lanes(&t01[c], &t11[c], &a);
-        out[c] = lerp_lanes(&top, &bottom, &b);
+    let w00 = fetch(texels, shift, &i, &jj);
+    let w10 = fetch(texels, shift, &i1, &jj);
+    let w01 = fetch(texels, shift, &i, &j1);
+    let w11 = fetch(texels, shift, &i1, &j1);
+    for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
+        let top = lerp_lanes(&unpack(&w00, c), &unpack(&w10, c), &a);
+        let bottom = lerp_lanes(&unpack(&w01, c), &unpack(&w11, c), &a);
+        *out = scaled(lerp_lanes(&top, &bottom, &b), scale);
     }
     true
+}
+
+/// Whether `f` holds for every lane, testing them all (a short-circuit test splits the
+/// group into lanes).
+#[inline(always)]
+fn every(lanes: &[f32], f: impl Fn(f32) -> bool) -> bool {
+    lanes.iter().fold(true, |all, &l| all & f(l))
+}
+
+/// `v · scale` per lane. (A loop: `map`'s closure is not always inlined, and then it
+/// runs without the routine's instruction set.)
+#[inline(always)]
+fn scaled(mut v: Lane<f32>, scale: f32) -> Lane<f32> {
+    for v in v.iter_mut() {
+        *v *= scale;
+    }
+    v
 }
 
 /// `x + (y − x)·t` per lane.
@@ -649,31 +692,39 @@ fn lerp_lanes(x: &Lane<f32>, y: &Lane<f32>, t: &Lane<f32>) -> Lane<f32> {
 /// λ of unit 0 for the group (`SpanTex::lambda_at`): ρ² vectorized when λ is per pixel,
 /// the logarithm per lane.
 #[inline(always)]
-fn lambda_lanes(tex: &mut SpanTex, n: usize, i0: usize, s: &Lane<f32>, t: &Lane<f32>) -> Lane<f32> {
+fn lambda_lanes(
+    tex: &mut SpanTex,
+    n: usize,
+    i0: usize,
+    s: &Lane<f32>,
+    t: &Lane<f32>,
+    r: &Lane<f32>,
+) -> Lane<f32> {
     let mut out = [0.0; LANES];
     if !tex.stage.lod_per_pixel {
-        for j in 0..LANES.min(tex.len - i0) {
+        let m = LANES.min(tex.len - i0);
+        for j in 0..m {
             out[j] = tex.lambda_at(n, i0 + j, s[j], t[j]);
+        }
+        // Lanes past the span repeat the last one's λ, so that they do not stop the group
+        // from sampling as one.
+        for j in m..LANES {
+            out[j] = out[m - 1];
         }
         return out;
     }
     let ts = &tex.spans[n];
-    let fi0 = i0 as f32;
     let mut rho2 = [0.0f32; LANES];
     for j in 0..LANES {
-        // TexSpan::lambda, written out.
-        let r = if ts.affine {
-            1.0
-        } else {
-            1.0 / (ts.q0 + ts.dq * (fi0 + J32[j]))
-        };
+        // TexSpan::lambda, written out (on affine spans r is 1, which changes no bit).
+        let r = r[j];
         let ux = (ts.ds - s[j] * ts.dq) * r * ts.w;
         let vx = (ts.dt - t[j] * ts.dq) * r * ts.h;
         let uy = (ts.sy - s[j] * ts.qy) * r * ts.w;
         let vy = (ts.ty - t[j] * ts.qy) * r * ts.h;
         rho2[j] = (ux * ux + vx * vx).max(uy * uy + vy * vy);
     }
-    if rho2.iter().all(|&r| r == rho2[0]) {
+    if every(&rho2, |r| r == rho2[0]) {
         out = [Sampler::lambda(rho2[0]); LANES];
     } else {
         for j in 0..LANES {
@@ -683,52 +734,87 @@ fn lambda_lanes(tex: &mut SpanTex, n: usize, i0: usize, s: &Lane<f32>, t: &Lane<
     out
 }
 
-/// LINEAR_MIPMAP_LINEAR (`Sampler::trilinear`) over a group whose lanes all magnify or all
-/// lie between the same two levels; `false` otherwise.
+/// A filter pair that depends on λ (`Sampler::sample_255`, scaled to 0 ..= 1) over a group
+/// whose lanes all magnify, or all minify from the same level (or pair of levels); `false`
+/// otherwise. `TRI`: the pair is LINEAR_MIPMAP_LINEAR and LINEAR (the code for the other
+/// pairs left out).
 #[inline(always)]
-fn trilinear_lanes(
+#[allow(clippy::too_many_arguments)]
+fn mipmap_lanes<const TRI: bool>(
     sm: &Sampler,
     tex: &mut SpanTex,
     n: usize,
     i0: usize,
     s: &Lane<f32>,
     t: &Lane<f32>,
+    r: &Lane<f32>,
     out: &mut Channels,
 ) -> bool {
-    let mut lambda = lambda_lanes(tex, n, i0, s, t);
-    let n = LANES.min(tex.len - i0);
+    // Every lane, those past the span's end included (their λ is extrapolated or
+    // repeated), so that the tests vectorize.
+    let mut lambda = lambda_lanes(tex, n, i0, s, t, r);
     for l in lambda.iter_mut() {
         *l += sm.lod_bias;
     }
+    if every(&lambda, |l| l.is_nan() || l <= sm.c) {
+        let linear = TRI || sm.mag == MagFilter::Linear;
+        return sample_level(sm, 0, linear, INV_255, s, t, out);
+    }
+    if !every(&lambda, |l| l > sm.c) {
+        return false;
+    }
     let q = sm.levels.len() - 1;
-    let lambda = &lambda[..n];
-    if lambda.iter().all(|&l| l.is_nan() || l <= sm.c) {
-        return sample_level(sm, 0, true, s, t, out);
-    }
-    if lambda.iter().all(|&l| l >= q as f32) {
-        return sample_level(sm, q, true, s, t, out);
-    }
-    let d1 = lambda[0] as usize;
-    if !lambda
-        .iter()
-        .all(|&l| l > sm.c && l < q as f32 && l as usize == d1)
-    {
-        return false;
-    }
-    let mut b: Channels = [[0.0; LANES]; 4];
-    if !sample_level(sm, d1, true, s, t, out) || !sample_level(sm, d1 + 1, true, s, t, &mut b) {
-        return false;
-    }
-    let mut f = [0.0f32; LANES];
-    for (f, l) in f.iter_mut().zip(lambda) {
-        *f = l - d1 as f32;
-    }
-    for c in 0..4 {
-        for j in 0..LANES {
-            out[c][j] += (b[c][j] - out[c][j]) * f[j];
+    let qf = q as f32;
+    let min = if TRI {
+        MinFilter::LinearMipmapLinear
+    } else {
+        sm.min
+    };
+    match min {
+        MinFilter::Nearest => sample_level(sm, 0, false, INV_255, s, t, out),
+        MinFilter::Linear => sample_level(sm, 0, true, INV_255, s, t, out),
+        MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
+            // The level of λ: 0 up to 0.5, else ⌈λ + ½⌉ − 1, at most q.
+            let mut d = [0.0; LANES];
+            for j in 0..LANES {
+                let l = lambda[j];
+                d[j] = if l <= 0.5 {
+                    0.0
+                } else {
+                    ((l + 0.5).ceil() - 1.0).min(qf)
+                };
+            }
+            if !every(&d, |v| v == d[0]) {
+                return false;
+            }
+            let linear = sm.min == MinFilter::LinearMipmapNearest;
+            sample_level(sm, d[0] as usize, linear, INV_255, s, t, out)
+        }
+        MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
+            let linear = min == MinFilter::LinearMipmapLinear;
+            if every(&lambda, |l| l >= qf) {
+                return sample_level(sm, q, linear, INV_255, s, t, out);
+            }
+            let d1 = lambda[0].floor();
+            if !every(&lambda, |l| l < qf && l.floor() == d1) {
+                return false;
+            }
+            let d1 = d1 as usize;
+            let mut b: Channels = [[0.0; LANES]; 4];
+            if !sample_level(sm, d1, linear, 1.0, s, t, out)
+                || !sample_level(sm, d1 + 1, linear, 1.0, s, t, &mut b)
+            {
+                return false;
+            }
+            for c in 0..4 {
+                for j in 0..LANES {
+                    let f = lambda[j] - d1 as f32;
+                    out[c][j] = (out[c][j] + (b[c][j] - out[c][j]) * f) * INV_255;
+                }
+            }
+            true
         }
     }
-    true
 }
 
 /// The texture environment over a group (`texenv::apply`; `primary` `None` means the
@@ -766,15 +852,26 @@ fn texenv_lanes(
                 }
             }
         }
-        _ => {
-            for j in 0..LANES {
-                let at = |v: &Channels| [v[0][j], v[1][j], v[2][j], v[3][j]];
-                let prev = at(c);
-                let out = texenv::apply(env, format, at(tex), prev, primary.map_or(prev, at));
-                for k in 0..4 {
-                    c[k][j] = out[k];
-                }
-            }
+        _ => texenv_by_pixel(env, format, tex, c, primary),
+    }
+}
+
+/// [`texenv_lanes`] for the modes it does not vectorize. Out of line, like
+/// [`texels_by_pixel`], for the same reason.
+#[inline(never)]
+fn texenv_by_pixel(
+    env: &TexEnv,
+    format: BaseFormat,
+    tex: &Channels,
+    c: &mut Channels,
+    primary: Option<&Channels>,
+) {
+    for j in 0..LANES {
+        let at = |v: &Channels| [v[0][j], v[1][j], v[2][j], v[3][j]];
+        let prev = at(c);
+        let out = texenv::apply(env, format, at(tex), prev, primary.map_or(prev, at));
+        for k in 0..4 {
+            c[k][j] = out[k];
         }
     }
 }
@@ -807,12 +904,68 @@ fn fog_lanes(tex: &SpanTex, f: &Fog, i0: usize, c: &mut Channels) {
     }
 }
 
+/// The texels of unit `n` for the group at `i0` (of a span of `len` pixels), in 0 ..= 1,
+/// sampled with `filter` (the unit's `F_*` class).
+#[inline(always)]
+fn unit_texels(
+    tex: &mut SpanTex,
+    len: usize,
+    sm: &Sampler,
+    filter: u8,
+    n: usize,
+    i0: usize,
+) -> Channels {
+    let (s, tt, r) = st_lanes(&tex.spans[n], i0);
+    let mut texel: Channels = [[0.0; LANES]; 4];
+    let fast = match filter {
+        F_NEAREST => sample_level(sm, 0, false, INV_255, &s, &tt, &mut texel),
+        F_BILINEAR => sample_level(sm, 0, true, INV_255, &s, &tt, &mut texel),
+        F_TRILINEAR => mipmap_lanes::<true>(sm, tex, n, i0, &s, &tt, &r, &mut texel),
+        F_LOD => mipmap_lanes::<false>(sm, tex, n, i0, &s, &tt, &r, &mut texel),
+        _ => false,
+    };
+    if !fast {
+        texels_by_pixel(tex, len, sm, filter, n, i0, &s, &tt, &mut texel);
+    }
+    texel
+}
+
+/// The scalar sampler over a group (scaled to 0 ..= 1), for what the vectorized one does
+/// not take. Out of
+/// line: inlined, its pixel-major writes lead the vectorizer to transpose the fast path's
+/// channel arrays.
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn texels_by_pixel(
+    tex: &mut SpanTex,
+    len: usize,
+    sm: &Sampler,
+    filter: u8,
+    n: usize,
+    i0: usize,
+    s: &Lane<f32>,
+    tt: &Lane<f32>,
+    texel: &mut Channels,
+) {
+    for j in 0..LANES.min(len - i0) {
+        let (i, s, tt) = (i0 + j, s[j], tt[j]);
+        let v = match filter {
+            F_NEAREST => sm.nearest(0, s, tt),
+            F_BILINEAR => sm.bilinear(0, s, tt),
+            _ => sm.sample_255(s, tt, tex.lambda_at(n, i, s, tt)),
+        };
+        for ch in 0..4 {
+            texel[ch][j] = v[ch] * INV_255;
+        }
+    }
+}
+
 /// The span routine for textured or fogged keys without cube maps, alpha test, stencil,
 /// logic op or dither: every unit in order, then fog. The depth test runs before texturing,
 /// which gives the same result (ES 1.1 §3.7: nothing between them can discard a fragment
 /// here) and skips the sampling of hidden fragments.
 #[multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
-pub(super) fn textured<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
+pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
     span: Span,
@@ -824,14 +977,16 @@ pub(super) fn textured<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
     for_each_group!(DEPTH, band, start, len, |i0, color, depth| {
-        textured_group::<TEX, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, color, depth)
+        textured_group::<F, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, color, depth)
     });
 }
 
 /// One group of [`textured`]; lanes beyond the span are computed and discarded by the
-/// caller (their coordinates are extrapolated, so they may take the scalar sampler).
+/// caller (their coordinates are extrapolated, so they may take the scalar sampler). `F`
+/// is the route's filter class: `F_NONE` (fog only), the filter of a single unit (a
+/// straight path for it alone, which the compiler can keep in registers), or `F_MULTI`.
 #[inline(always)]
-fn textured_group<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
+fn textured_group<const F: u8, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
     interp: &mut SpanInterp,
@@ -848,45 +1003,22 @@ fn textured_group<const TEX: bool, const DEPTH: bool, const BLEND: bool>(
         None => colors(interp, i0),
     };
     // Without planes (cannot happen for primitives set up with this state) texturing is off.
-    if TEX && t.tex.is_some() {
+    if F != F_NONE && t.tex.is_some() {
         let stage = tex.stage;
-        // The untextured color, read by COMBINE past the first unit (on the first it is
-        // the previous color).
-        let primary = (stage.units.len() > 1).then_some(c);
-        for (n, (_, u)) in stage.units.iter().enumerate() {
-            let sm = &*u.sampler;
-            let (s, tt) = st_lanes(&tex.spans[n], i0);
-            let mut texel: Channels = [[0.0; LANES]; 4];
-            let filter = filter_of(sm);
-            let fast = match filter {
-                F_NEAREST => sample_level(sm, 0, false, &s, &tt, &mut texel),
-                F_BILINEAR => sample_level(sm, 0, true, &s, &tt, &mut texel),
-                F_TRILINEAR => trilinear_lanes(sm, tex, n, i0, &s, &tt, &mut texel),
-                _ => false,
-            };
-            if !fast {
-                for j in 0..LANES.min(interp.len - i0) {
-                    let (i, s, tt) = (i0 + j, s[j], tt[j]);
-                    let v = match filter {
-                        F_NEAREST => sm.nearest(0, s, tt),
-                        F_BILINEAR => sm.bilinear(0, s, tt),
-                        F_TRILINEAR => sm.trilinear(s, tt, tex.lambda_at(n, i, s, tt)),
-                        _ => sm.sample_255(s, tt, tex.lambda_at(n, i, s, tt)),
-                    };
-                    for ch in 0..4 {
-                        texel[ch][j] = v[ch];
-                    }
-                }
+        if F != F_MULTI {
+            let (_, u) = &stage.units[0];
+            let texel = unit_texels(tex, interp.len, &u.sampler, F, 0, i0);
+            texenv_lanes(&u.env, u.sampler.format, &texel, &mut c, None);
+        } else {
+            // The untextured color, read by COMBINE past the first unit (on the first it is
+            // the previous color).
+            let primary = (stage.units.len() > 1).then_some(c);
+            for (n, (_, u)) in stage.units.iter().enumerate() {
+                let sm = &*u.sampler;
+                let texel = unit_texels(tex, interp.len, sm, filter_of(sm), n, i0);
+                let primary = primary.as_ref().filter(|_| n > 0);
+                texenv_lanes(&u.env, sm.format, &texel, &mut c, primary);
             }
-            // Plain nested loops: a flattening iterator does not vectorize.
-            const INV_255: f32 = 1.0 / 255.0;
-            for ch in texel.iter_mut() {
-                for v in ch.iter_mut() {
-                    *v *= INV_255;
-                }
-            }
-            let primary = primary.as_ref().filter(|_| n > 0);
-            texenv_lanes(&u.env, sm.format, &texel, &mut c, primary);
         }
     }
     if let Some(f) = &tex.stage.fog {
