@@ -444,3 +444,99 @@ fn images_do_not_depend_on_the_thread_count() {
         }
     }
 }
+
+/// The vectorized span routine (no alpha test) and the per-pixel one (alpha test ALWAYS, an
+/// unrelated state) agree on every filter pair that depends on λ and on the COMBINE
+/// functions, including a second unit whose primary color differs from its previous one.
+#[test]
+fn lod_filters_and_combine_agree_across_span_routines() {
+    use GLES_CM::core::texenv::{Combine, CombineFunc, Operand, Source};
+    let always = |s: &mut RenderState| {
+        s.alpha_test = Some(AlphaTest {
+            func: CompareFunc::Always,
+            reference: 0.5,
+        })
+    };
+    let check = |what: &str, parts: &[(RenderState, Mesh)]| {
+        let base = render(parts, &|_| {});
+        assert!(
+            base.color().iter().any(|&c| c != base.color()[0]),
+            "{what}: empty image"
+        );
+        let got = render(parts, &always);
+        if let Some(d) = first_diff(base.color(), got.color()) {
+            panic!("{what}: color differs at {d}");
+        }
+    };
+    for q in [Quality::Fastest, Quality::Nicest] {
+        for (min, mag) in [
+            (MinFilter::NearestMipmapNearest, MagFilter::Nearest),
+            (MinFilter::LinearMipmapNearest, MagFilter::Linear),
+            (MinFilter::NearestMipmapLinear, MagFilter::Nearest),
+            (MinFilter::LinearMipmapLinear, MagFilter::Nearest),
+            (MinFilter::Linear, MagFilter::Nearest),
+            (MinFilter::Nearest, MagFilter::Linear),
+        ] {
+            let s = scenes::floor_state(W, H, min, mag, q);
+            check(&format!("{min:?}/{mag:?} {q:?}"), &[(s, scenes::floor())]);
+        }
+    }
+    let funcs = [
+        CombineFunc::Replace,
+        CombineFunc::Modulate,
+        CombineFunc::Add,
+        CombineFunc::AddSigned,
+        CombineFunc::Interpolate,
+        CombineFunc::Subtract,
+    ];
+    let sources = [
+        Source::Texture,
+        Source::Previous,
+        Source::PrimaryColor,
+        Source::Constant,
+    ];
+    let operands = [
+        Operand::SrcColor,
+        Operand::OneMinusSrcColor,
+        Operand::SrcAlpha,
+        Operand::OneMinusSrcAlpha,
+    ];
+    for (i, &rgb) in funcs.iter().enumerate() {
+        for unit in [0, 1] {
+            let pick = |k: usize| (sources[(i + k + unit) % 4], operands[(2 * i + k) % 4]);
+            let (s0, o0) = pick(0);
+            let (s1, o1) = pick(1);
+            let (s2, o2) = pick(2);
+            let combine = Combine {
+                rgb,
+                alpha: funcs[(i + 3) % funcs.len()],
+                src_rgb: [s0, s1, s2],
+                src_alpha: [s2, s0, s1],
+                operand_rgb: [o0, o1, o2],
+                operand_alpha: [o1, o2, o0],
+                rgb_scale: [1.0, 2.0, 4.0][i % 3],
+                alpha_scale: [2.0, 1.0][i % 2],
+            };
+            let mut s = scenes::floor_state(
+                W,
+                H,
+                MinFilter::LinearMipmapLinear,
+                MagFilter::Linear,
+                Quality::Nicest,
+            );
+            let sampler = s.textures[0].as_ref().expect("a unit").sampler.clone();
+            s.textures[unit] = Some(TextureUnit {
+                sampler,
+                env: TexEnv {
+                    mode: EnvMode::Combine(combine),
+                    color: [0.2, 0.9, 0.4, 0.7],
+                },
+                coord_replace: false,
+            });
+            check(
+                &format!("COMBINE {rgb:?} on unit {unit}"),
+                &[(s, scenes::floor())],
+            );
+        }
+    }
+}

@@ -54,6 +54,13 @@ pub struct Combine {
     pub alpha_scale: f32,
 }
 
+impl Combine {
+    /// Whether the RGB function is DOT3_RGB or DOT3_RGBA (which replace alpha too).
+    pub fn is_dot3(&self) -> bool {
+        matches!(self.rgb, CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba)
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum EnvMode {
     Replace,

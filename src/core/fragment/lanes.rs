@@ -10,7 +10,7 @@
 use multiversion::multiversion;
 
 use super::*;
-use crate::core::texenv::{EnvMode, FogMode, TexEnv};
+use crate::core::texenv::{Combine, CombineFunc, EnvMode, FogMode, Operand, Source, TexEnv};
 use crate::core::texture::{BaseFormat, MagFilter, MinFilter, Wrap};
 
 /// Texels are unpacked to 0 ..= 255 and filtered there, then scaled to 0 ..= 1.
@@ -852,7 +852,85 @@ fn texenv_lanes(
                 }
             }
         }
+        EnvMode::Combine(k) if !k.is_dot3() => {
+            let prev = *c;
+            combine_lanes(&k, env.color, tex, &prev, primary.unwrap_or(&prev), c)
+        }
         _ => texenv_by_pixel(env, format, tex, c, primary),
+    }
+}
+
+/// COMBINE without the DOT3 functions over a group (`texenv::combine` exactly), into `out`.
+#[inline(always)]
+fn combine_lanes(
+    k: &Combine,
+    constant: [f32; 4],
+    tex: &Channels,
+    prev: &Channels,
+    primary: &Channels,
+    out: &mut Channels,
+) {
+    let constant = constant.map(|v| [v; LANES]);
+    let src = |s: Source| match s {
+        Source::Texture => tex,
+        Source::Constant => &constant,
+        Source::PrimaryColor => primary,
+        Source::Previous => prev,
+    };
+    // Argument `n` of channel `ch` (3: alpha), as `texenv::combine`'s arguments give it.
+    let arg = |n: usize, ch: usize| -> Lane<f32> {
+        let (source, operand) = if ch < 3 {
+            (k.src_rgb[n], k.operand_rgb[n])
+        } else {
+            (k.src_alpha[n], k.operand_alpha[n])
+        };
+        let c = src(source);
+        let (from, invert) = match operand {
+            Operand::SrcColor => (ch, false),
+            Operand::OneMinusSrcColor => (ch, true),
+            Operand::SrcAlpha => (3, false),
+            Operand::OneMinusSrcAlpha => (3, true),
+        };
+        let mut v = c[from];
+        if invert {
+            for v in v.iter_mut() {
+                *v = 1.0 - *v;
+            }
+        }
+        v
+    };
+    for ch in 0..4 {
+        let (f, scale) = if ch < 3 {
+            (k.rgb, k.rgb_scale)
+        } else {
+            (k.alpha, k.alpha_scale)
+        };
+        let a = arg(0, ch);
+        let mut o = [0.0; LANES];
+        match f {
+            CombineFunc::Replace => o = a,
+            CombineFunc::Interpolate => {
+                let (b, c) = (arg(1, ch), arg(2, ch));
+                for j in 0..LANES {
+                    o[j] = a[j] * c[j] + b[j] * (1.0 - c[j]);
+                }
+            }
+            _ => {
+                let b = arg(1, ch);
+                for j in 0..LANES {
+                    o[j] = match f {
+                        CombineFunc::Modulate => a[j] * b[j],
+                        CombineFunc::Add => a[j] + b[j],
+                        CombineFunc::AddSigned => a[j] + b[j] - 0.5,
+                        CombineFunc::Subtract => a[j] - b[j],
+                        _ => 0.0,
+                    };
+                }
+            }
+        }
+        for j in 0..LANES {
+            out[ch][j] = (o[j] * scale).clamp(0.0, 1.0);
+        }
     }
 }
 
