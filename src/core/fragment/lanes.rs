@@ -79,6 +79,7 @@ fn depth_test(
     format: DepthFormat,
     write: bool,
     i0: usize,
+    live: Lane<u32>,
     depth: &mut Lane<u32>,
 ) -> Lane<u32> {
     let max = format.max() as f64;
@@ -106,6 +107,9 @@ fn depth_test(
         CompareFunc::NotEqual => cmp!(!=),
         CompareFunc::GreaterEqual => cmp!(>=),
         CompareFunc::Always => pass = [!0; LANES],
+    }
+    for j in 0..LANES {
+        pass[j] &= live[j];
     }
     if write {
         for j in 0..LANES {
@@ -313,35 +317,52 @@ fn blend_lanes(b: &Blend, src: &mut Channels, dst: &mut Channels) {
     *dst = out;
 }
 
-/// Runs `$group(i0, color, depth)` over the groups of the span of `$len` pixels at
-/// `$start` in `$band`; a partial last group works on copies padded to [`LANES`], so its
-/// extra lanes are computed and discarded. `depth` is `None` only for whole groups without
-/// a depth test. A macro, not a function taking a closure: closures do not inherit the
-/// instruction set the span routines are compiled for.
+/// Runs `$group(i0, live, color, depth)` over the groups of the span of `$len` pixels at
+/// `$start` in `$band`. `live` masks the lanes inside the span: a partial last group works
+/// in place on the band's next pixels, writing none of them (the group routines AND their
+/// writes with `live`), or, at the very end of the band, on copies padded to [`LANES`]
+/// (a copy of a few pixels is a library call, too slow to take for every small span).
+/// `depth` is `None` only for groups without a depth test. A macro, not a function taking
+/// a closure: closures do not inherit the instruction set the span routines are compiled
+/// for.
 macro_rules! for_each_group {
-    ($depth_test:expr, $band:expr, $start:expr, $len:expr, |$i0:ident, $color:ident, $depth:ident| $group:expr) => {{
+    ($depth_test:expr, $band:expr, $start:expr, $len:expr, |$i0:ident, $live:ident, $color:ident, $depth:ident| $group:expr) => {{
         let (band, start, len): (&mut BandMut<'_>, usize, usize) = ($band, $start, $len);
         let mut i0 = 0;
         while i0 < len {
             let m = (len - i0).min(LANES);
             let at = start + i0;
-            let color = &mut band.color[at..at + m];
-            let depth = if $depth_test {
-                &mut band.depth[at..at + m]
-            } else {
-                &mut [][..]
-            };
-            if m == LANES {
+            let in_place =
+                at + LANES <= band.color.len() && (!$depth_test || at + LANES <= band.depth.len());
+            if m == LANES || in_place {
                 let $i0 = i0;
-                let $color: &mut Lane<u32> = color.try_into().expect("a whole group");
-                let $depth: Option<&mut Lane<u32>> = depth.try_into().ok();
+                let $live: Lane<u32> = if m == LANES {
+                    [!0; LANES]
+                } else {
+                    live_lanes(m)
+                };
+                let $color: &mut Lane<u32> = (&mut band.color[at..at + LANES])
+                    .try_into()
+                    .expect("a whole group");
+                let $depth: Option<&mut Lane<u32>> = if $depth_test {
+                    (&mut band.depth[at..at + LANES]).try_into().ok()
+                } else {
+                    None
+                };
                 $group;
             } else {
+                let color = &mut band.color[at..at + m];
+                let depth = if $depth_test {
+                    &mut band.depth[at..at + m]
+                } else {
+                    &mut [][..]
+                };
                 let (mut c, mut d) = ([0; LANES], [0; LANES]);
                 c[..m].copy_from_slice(color);
                 d[..depth.len()].copy_from_slice(depth);
                 {
                     let $i0 = i0;
+                    let $live: Lane<u32> = live_lanes(m);
                     let $color: &mut Lane<u32> = &mut c;
                     let $depth: Option<&mut Lane<u32>> = Some(&mut d);
                     $group;
@@ -355,20 +376,32 @@ macro_rules! for_each_group {
     }};
 }
 
-/// The depth test of a group (when `DEPTH`), giving the lanes that pass, or `None` when
-/// nothing is left to write: every lane failed, or the color mask keeps every bit.
+/// The mask of the first `m` lanes.
+#[inline(always)]
+fn live_lanes(m: usize) -> Lane<u32> {
+    let mut live = [0; LANES];
+    for (j, l) in live.iter_mut().enumerate() {
+        *l = 0u32.wrapping_sub((j < m) as u32);
+    }
+    live
+}
+
+/// The depth test of the `live` lanes of a group (when `DEPTH`), giving the lanes that
+/// pass, or `None` when nothing is left to write: every lane failed, or the color mask
+/// keeps every bit.
 #[inline(always)]
 fn group_pass<const DEPTH: bool>(
     k: &FragmentKey,
     interp: &SpanInterp,
     i0: usize,
+    live: Lane<u32>,
     depth: Option<&mut Lane<u32>>,
 ) -> Option<Lane<u32>> {
-    let mut pass = [!0u32; LANES];
+    let mut pass = live;
     if DEPTH {
         let (func, df) = k.depth.expect("DEPTH routes have a depth test");
         let depth = depth.expect("DEPTH routes have a depth buffer");
-        pass = depth_test(interp, func, df, k.depth_write, i0, depth);
+        pass = depth_test(interp, func, df, k.depth_write, i0, live, depth);
         if pass == [0; LANES] {
             return None;
         }
@@ -429,8 +462,8 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
         }
         return;
     }
-    for_each_group!(DEPTH, band, start, len, |i0, color, depth| {
-        simple_group::<DEPTH, SMOOTH, BLEND>(k, &mut interp, flat, i0, color, depth)
+    for_each_group!(DEPTH, band, start, len, |i0, live, color, depth| {
+        simple_group::<DEPTH, SMOOTH, BLEND>(k, &mut interp, flat, i0, live, color, depth)
     });
 }
 
@@ -441,10 +474,11 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     interp: &mut SpanInterp,
     flat: [f32; 4],
     i0: usize,
+    live: Lane<u32>,
     color: &mut Lane<u32>,
     depth: Option<&mut Lane<u32>>,
 ) {
-    let Some(pass) = group_pass::<DEPTH>(k, interp, i0, depth) else {
+    let Some(pass) = group_pass::<DEPTH>(k, interp, i0, live, depth) else {
         return;
     };
     // Measured: with a depth test in the same group the separate steps are faster.
@@ -1054,8 +1088,8 @@ pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
     let mut tex = SpanTex::new(stage, t, span);
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
-    for_each_group!(DEPTH, band, start, len, |i0, color, depth| {
-        textured_group::<F, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, color, depth)
+    for_each_group!(DEPTH, band, start, len, |i0, live, color, depth| {
+        textured_group::<F, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, live, color, depth)
     });
 }
 
@@ -1064,16 +1098,18 @@ pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
 /// is the route's filter class: `F_NONE` (fog only), the filter of a single unit (a
 /// straight path for it alone, which the compiler can keep in registers), or `F_MULTI`.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn textured_group<const F: u8, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
     interp: &mut SpanInterp,
     tex: &mut SpanTex,
     i0: usize,
+    live: Lane<u32>,
     color: &mut Lane<u32>,
     depth: Option<&mut Lane<u32>>,
 ) {
-    let Some(pass) = group_pass::<DEPTH>(k, interp, i0, depth) else {
+    let Some(pass) = group_pass::<DEPTH>(k, interp, i0, live, depth) else {
         return;
     };
     let mut c: Channels = match t.flat {
