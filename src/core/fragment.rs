@@ -287,7 +287,9 @@ struct SpanTex<'a> {
 }
 
 impl<'a> SpanTex<'a> {
-    #[inline]
+    // Inlined so that the caller builds it in place: returned, it is a copy of several
+    // hundred bytes per span.
+    #[inline(always)]
     fn new(stage: &'a TexStage, t: &Shading, span: Span) -> SpanTex<'a> {
         let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
         let mut spans = [TexSpan::default(); TEXTURE_UNITS];
