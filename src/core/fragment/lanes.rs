@@ -663,11 +663,12 @@ fn sample_level(
         b[j] = v[j] - fv;
     }
     // Levels are powers of two wide: a shift instead of a multiply (SSE2 has no 32-bit
-    // vector multiply). A complete texture has no empty level; an empty one takes the
-    // scalar sampler, which samples zero.
+    // vector multiply). A complete texture has no empty level; an empty one samples as
+    // zero rather than panicking.
     let (texels, shift) = (&img.texels[..], img.width.trailing_zeros());
     if texels.is_empty() {
-        return false;
+        *out = [[0.0; LANES]; 4];
+        return true;
     }
     let (wi, hi) = (img.width as i32, img.height as i32);
     if !linear {
@@ -904,7 +905,11 @@ fn combine_lanes(
     primary: &Channels,
     out: &mut Channels,
 ) {
-    let constant = constant.map(|v| [v; LANES]);
+    let mut lanes: Channels = [[0.0; LANES]; 4];
+    for (l, v) in lanes.iter_mut().zip(constant) {
+        *l = [v; LANES];
+    }
+    let constant = lanes;
     let src = |s: Source| match s {
         Source::Texture => tex,
         Source::Constant => &constant,
