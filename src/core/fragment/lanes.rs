@@ -680,15 +680,41 @@ fn sample_level(
         }
         return true;
     }
+    // A weight of exactly 0 makes the lerp return its first operand bit for bit (x + d·0 is
+    // x for texel values), so the texels it would blend in need not be fetched. Texels
+    // mapped 1:1 onto pixels (sprites, 2D blits, UI) sample texel centers: one fetch of four.
+    let (flat_s, flat_t) = (every(&a, |a| a == 0.0), every(&b, |b| b == 0.0));
+    if flat_s && flat_t {
+        wrap_lanes(sm.wrap_s, &mut i, wi);
+        wrap_lanes(sm.wrap_t, &mut jj, hi);
+        let words = fetch(texels, shift, &i, &jj);
+        for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
+            *out = scaled(unpack(&words, c), scale);
+        }
+        return true;
+    }
     let (mut i1, mut j1) = (i.map(|i| i.wrapping_add(1)), jj.map(|j| j.wrapping_add(1)));
     wrap_lanes(sm.wrap_s, &mut i, wi);
     wrap_lanes(sm.wrap_s, &mut i1, wi);
     wrap_lanes(sm.wrap_t, &mut jj, hi);
     wrap_lanes(sm.wrap_t, &mut j1, hi);
     let w00 = fetch(texels, shift, &i, &jj);
-    let w10 = fetch(texels, shift, &i1, &jj);
-    let w01 = fetch(texels, shift, &i, &j1);
-    let w11 = fetch(texels, shift, &i1, &j1);
+    let w10 = if flat_s {
+        w00
+    } else {
+        fetch(texels, shift, &i1, &jj)
+    };
+    let (w01, w11) = if flat_t {
+        (w00, w10)
+    } else if flat_s {
+        let w01 = fetch(texels, shift, &i, &j1);
+        (w01, w01)
+    } else {
+        (
+            fetch(texels, shift, &i, &j1),
+            fetch(texels, shift, &i1, &j1),
+        )
+    };
     for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
         let top = lerp_lanes(&unpack(&w00, c), &unpack(&w10, c), &a);
         let bottom = lerp_lanes(&unpack(&w01, c), &unpack(&w11, c), &a);
@@ -830,20 +856,44 @@ fn mipmap_lanes<const TRI: bool>(
             if every(&lambda, |l| l >= qf) {
                 return sample_level(sm, q, linear, INV_255, s, t, out);
             }
-            let d1 = lambda[0].floor();
-            if !every(&lambda, |l| l < qf && l.floor() == d1) {
+            // The lanes' first levels d1 = ⌊λ⌋: one level for the whole group, or two
+            // neighbouring ones where the group crosses a level boundary (a tunnel or a
+            // floor does that on every row); then a third level is sampled and each lane
+            // blends its own pair.
+            let mut floor = [0.0f32; LANES];
+            for j in 0..LANES {
+                floor[j] = lambda[j].floor();
+            }
+            let lo = floor.iter().fold(f32::INFINITY, |m, &d| m.min(d));
+            let hi = floor.iter().fold(f32::NEG_INFINITY, |m, &d| m.max(d));
+            if !(every(&lambda, |l| l < qf) && hi - lo <= 1.0) {
                 return false;
             }
-            let d1 = d1 as usize;
+            let d1 = lo as usize;
             let mut b: Channels = [[0.0; LANES]; 4];
             if !sample_level(sm, d1, linear, 1.0, s, t, out)
                 || !sample_level(sm, d1 + 1, linear, 1.0, s, t, &mut b)
             {
                 return false;
             }
+            if hi > lo {
+                // Lanes on the upper pair blend level d1 + 1 into d1 + 2 (which exists:
+                // their λ < q).
+                let mut c2: Channels = [[0.0; LANES]; 4];
+                if !sample_level(sm, d1 + 2, linear, 1.0, s, t, &mut c2) {
+                    return false;
+                }
+                for c in 0..4 {
+                    for j in 0..LANES {
+                        let upper = floor[j] > lo;
+                        out[c][j] = if upper { b[c][j] } else { out[c][j] };
+                        b[c][j] = if upper { c2[c][j] } else { b[c][j] };
+                    }
+                }
+            }
             for c in 0..4 {
                 for j in 0..LANES {
-                    let f = lambda[j] - d1 as f32;
+                    let f = lambda[j] - floor[j];
                     out[c][j] = (out[c][j] + (b[c][j] - out[c][j]) * f) * INV_255;
                 }
             }
