@@ -608,6 +608,23 @@ fn fetch(texels: &[u32], shift: u32, x: &Lane<i32>, y: &Lane<i32>) -> Lane<u32> 
     words
 }
 
+/// The texel words at wrapped (x, y) and (x + 1, y) of a level of at least two texels, for
+/// lanes whose x + 1 does not wrap: one 8-byte load per lane where the compiler merges the
+/// two adjacent reads.
+#[inline(always)]
+fn fetch_pairs(texels: &[u32], shift: u32, x: &Lane<i32>, y: &Lane<i32>) -> (Lane<u32>, Lane<u32>) {
+    // As in `fetch`, the clamp only lets the compiler drop the bounds checks.
+    let last = texels.len() - 2;
+    let (mut left, mut right) = ([0; LANES], [0; LANES]);
+    for j in 0..LANES {
+        let k = ((y[j] << shift | x[j]) as u32 as usize).min(last);
+        let pair = u64::from(texels[k]) | u64::from(texels[k + 1]) << 32;
+        left[j] = pair as u32;
+        right[j] = (pair >> 32) as u32;
+    }
+    (left, right)
+}
+
 /// 4, the channels of a texel, as a value the optimizer cannot see. Unpacking and
 /// filtering loop over the channels; unrolled (which a known count of 4 invites), the four
 /// channels of one pixel look alike and the vectorizer packs them into one vector, pixel
@@ -698,6 +715,22 @@ fn sample_level(
     wrap_lanes(sm.wrap_s, &mut i1, wi);
     wrap_lanes(sm.wrap_t, &mut jj, hi);
     wrap_lanes(sm.wrap_t, &mut j1, hi);
+    // Where no lane's right neighbour wraps around, the two texels of a row are adjacent
+    // and come as one pair (half the loads).
+    let mut adjacent = texels.len() >= 2;
+    for j in 0..LANES {
+        adjacent &= i1[j] == i[j].wrapping_add(1);
+    }
+    if adjacent && !flat_s && !flat_t {
+        let (w00, w10) = fetch_pairs(texels, shift, &i, &jj);
+        let (w01, w11) = fetch_pairs(texels, shift, &i, &j1);
+        for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
+            let top = lerp_lanes(&unpack(&w00, c), &unpack(&w10, c), &a);
+            let bottom = lerp_lanes(&unpack(&w01, c), &unpack(&w11, c), &a);
+            *out = scaled(lerp_lanes(&top, &bottom, &b), scale);
+        }
+        return true;
+    }
     let w00 = fetch(texels, shift, &i, &jj);
     let w10 = if flat_s {
         w00
