@@ -464,9 +464,24 @@ fn fill(
     count: usize,
 ) {
     let start = list.len();
-    list.resize(start + count, ClipVertex::new(Vec4::ZERO, Vec4::ZERO));
-    for (v, i) in list[start..].iter_mut().zip(numbers) {
-        stage.write(i, v);
+    list.resize(start + count, stage.template());
+    if !stage.batched {
+        for (v, i) in list[start..].iter_mut().zip(numbers) {
+            stage.write(i, v);
+        }
+        return;
+    }
+    let mut numbers = numbers;
+    for chunk in list[start..].chunks_mut(lighting::LANES) {
+        // A short last group repeats its first vertex in the unused lanes.
+        let mut idx = [0; lighting::LANES];
+        for slot in &mut idx[..chunk.len()] {
+            *slot = numbers.next().unwrap_or_default();
+        }
+        for k in chunk.len()..lighting::LANES {
+            idx[k] = idx[0];
+        }
+        stage.write_lanes(&idx, chunk);
     }
 }
 
