@@ -75,8 +75,11 @@ pub(super) struct Stage<'s, 'd> {
     /// [`write_lanes`](Self::write_lanes) applies: no skinning, no texgen, and lighting
     /// (if on) with directional lights only.
     pub batched: bool,
-    /// Every unit's coordinates, when all are constant over the draw.
-    const_tex: Option<[Vec4; TEXTURE_UNITS]>,
+    /// The texture coordinates of units whose are constant over the draw (the others
+    /// hold the default).
+    template_tex: [Vec4; TEXTURE_UNITS],
+    /// Some unit's coordinates are not constant.
+    tex_varies: bool,
 }
 
 impl<'s, 'd> Stage<'s, 'd> {
@@ -103,13 +106,11 @@ impl<'s, 'd> Stage<'s, 'd> {
                 }
             }
         });
-        let mut const_tex = Some([Vec4::ZERO; TEXTURE_UNITS]);
-        for (u, src) in tex.iter().enumerate() {
-            match (src, &mut const_tex) {
-                (TexSource::Constant(tc), Some(t)) => t[u] = *tc,
-                _ => const_tex = None,
-            }
-        }
+        let template_tex = tex.map(|src| match src {
+            TexSource::Constant(tc) => tc,
+            _ => Vec4::new(0.0, 0.0, 0.0, 1.0),
+        });
+        let tex_varies = tex.iter().any(|t| !matches!(t, TexSource::Constant(_)));
         Stage {
             state,
             draw,
@@ -135,7 +136,8 @@ impl<'s, 'd> Stage<'s, 'd> {
                 .as_ref()
                 .map(|p| p.iter().map(|m| (*m, normal_matrix(m))).collect()),
             tex,
-            const_tex,
+            template_tex,
+            tex_varies,
             points: draw.primitive == Primitive::Points,
             attenuate: state.point_params.attenuation != [1.0, 0.0, 0.0],
             planes: state.clip_planes.len().min(MAX_USER_PLANES),
@@ -352,9 +354,8 @@ impl<'s, 'd> Stage<'s, 'd> {
         };
         // `out` holds `template()`: only what varies per vertex is written, component by
         // component (assembling vectors from lanes costs more than the stores).
-        let per_vertex_rest = self.points || self.planes > 0 || self.const_tex.is_none();
-        for (k, v) in out.iter_mut().enumerate().take(LANES) {
-            if per_vertex_rest {
+        if self.points || self.planes > 0 {
+            for (k, v) in out.iter_mut().enumerate().take(LANES) {
                 self.finish(
                     idx[k],
                     lane4(&pos, k),
@@ -364,12 +365,25 @@ impl<'s, 'd> Stage<'s, 'd> {
                     Vec3::new(normal[0][k], normal[1][k], normal[2][k]),
                     v,
                 );
-                continue;
             }
+            return;
+        }
+        for (k, v) in out.iter_mut().enumerate().take(LANES) {
             store_lane(&mut v.pos, &pos, k);
             store_lane(&mut v.color, &color, k);
             store_lane(&mut v.back_color, &back_color, k);
             v.eye = Vec3::new(eye[0][k], eye[1][k], eye[2][k]);
+        }
+        if self.tex_varies {
+            for (&i, v) in idx.iter().zip(out.iter_mut()) {
+                // Without texgen (not batched) a unit that varies is an array.
+                for (t, src) in v.tex.iter_mut().zip(&self.tex) {
+                    if let TexSource::Array(a, matrix) = *src {
+                        let tc = a.fetch_vec4(i);
+                        *t = matrix.map_or(tc, |m| m * tc);
+                    }
+                }
+            }
         }
     }
 
@@ -378,9 +392,7 @@ impl<'s, 'd> Stage<'s, 'd> {
     /// (constant texture coordinates, no point size, no clip distances).
     pub fn template(&self) -> ClipVertex {
         let mut v = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
-        if let Some(t) = self.const_tex {
-            v.tex = t;
-        }
+        v.tex = self.template_tex;
         v
     }
 
@@ -548,6 +560,9 @@ mod tests {
             .flat_map(|k| (0..4).map(move |j| at(k + 2, j) * 0.5))
             .collect();
         let (pb, nb, cb) = (bytes(&pos), bytes(&nrm), bytes(&col));
+        let fixed: Vec<u8> = (0..2 * n as i32)
+            .flat_map(|k| (k * 40_000 - 300_000).to_ne_bytes())
+            .collect();
         fn array(data: &[u8], size: usize) -> AttribArray<'_> {
             AttribArray {
                 data,
@@ -564,7 +579,7 @@ mod tests {
             position: dir.extend(0.0),
             ..Light::default()
         };
-        for case in 0..32u32 {
+        for case in 0..64u32 {
             let mut s = RenderState::new(8, 8);
             s.modelview = Mat4::from_scale(Vec3::new(1.5, 0.5, 2.0))
                 * Mat4::from_rotation_x(0.4)
@@ -591,9 +606,30 @@ mod tests {
                 l.back.specular = Vec4::splat(0.3);
                 s.lighting = Some(l);
             }
-            let mut d = draw(&pb, Primitive::Triangles, n);
+            // Texture coordinates: a constant, a float array under a texture matrix and a
+            // 16.16 array; or, with points and a clip plane, every field per vertex.
+            let prim = if case & 32 != 0 {
+                s.clip_planes = vec![Vec4::new(0.5, -1.0, 0.25, 2.0)];
+                s.point_params.attenuation = [1.0, 0.5, 0.25];
+                Primitive::Points
+            } else {
+                Primitive::Triangles
+            };
+            let mut d = draw(&pb, prim, n);
             d.normal = AttribSource::Array(array(&nb, 3));
             d.color = AttribSource::Array(array(&cb, 4));
+            if case & 2 != 0 {
+                d.texcoord[1] = AttribSource::Constant([0.5, 0.25, 0.0, 2.0]);
+                d.texcoord[2] = AttribSource::Array(array(&cb, 4));
+                s.texture_matrices[2] = Mat4::from_rotation_z(0.3);
+                d.texcoord[3] = AttribSource::Array(AttribArray {
+                    data: &fixed,
+                    ty: ComponentType::Fixed,
+                    size: 2,
+                    stride: 8,
+                    normalized: false,
+                });
+            }
             let stage = Stage::new(&s, &d);
             assert!(stage.batched);
             let v = run(&s, &d).unwrap();
