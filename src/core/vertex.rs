@@ -13,6 +13,8 @@ use super::{OutOfMemory, TEXTURE_UNITS};
 pub mod lighting;
 mod transform;
 
+use lighting::LANES;
+
 /// The component types vertex arrays can hold.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ComponentType {
@@ -71,18 +73,38 @@ impl AttribArray<'_> {
     /// forwarding.
     #[inline]
     pub fn fetch_vec4(&self, i: usize) -> Vec4 {
-        // Float arrays of 3 or 4 components are nearly every array a vertex reads; they get
-        // a path small enough to inline, with fixed-size loads.
+        // Float arrays of 3 or 4 components are nearly every array a vertex reads; they and
+        // 16.16 arrays (texture coordinates too) get a path small enough to inline, with
+        // fixed-size loads.
         if self.ty == ComponentType::Float && (self.size == 3 || self.size == 4) {
-            let base = i * self.stride;
-            let Some(b) = self.data.get(base..base + 4 * self.size) else {
-                return Vec4::from_array(DEFAULT);
-            };
-            let f = |k: usize| f32::from_ne_bytes([b[k], b[k + 1], b[k + 2], b[k + 3]]);
-            let w = if self.size == 4 { f(12) } else { 1.0 };
-            return Vec4::new(f(0), f(4), f(8), w);
+            return self.words::<false>(i);
+        }
+        if self.ty == ComponentType::Fixed && (2..=4).contains(&self.size) {
+            return self.words::<true>(i);
         }
         Vec4::from_array(self.fetch_any(i))
+    }
+
+    /// [`fetch_vec4`](Self::fetch_vec4) of a float array of 3 or 4 components or (`FIXED`)
+    /// a 16.16 array of 2 to 4.
+    #[inline(always)]
+    fn words<const FIXED: bool>(&self, i: usize) -> Vec4 {
+        let base = i * self.stride;
+        let Some(b) = self.data.get(base..base + 4 * self.size) else {
+            return Vec4::from_array(DEFAULT);
+        };
+        let f = |k: usize| {
+            let w = [b[k], b[k + 1], b[k + 2], b[k + 3]];
+            if FIXED {
+                fixed::to_f32(i32::from_ne_bytes(w))
+            } else {
+                f32::from_ne_bytes(w)
+            }
+        };
+        // Float arrays come here with 3 or 4 components only.
+        let z = if FIXED && self.size < 3 { 0.0 } else { f(8) };
+        let w = if self.size == 4 { f(12) } else { 1.0 };
+        Vec4::new(f(0), f(4), z, w)
     }
 
     #[inline(never)]
@@ -464,9 +486,24 @@ fn fill(
     count: usize,
 ) {
     let start = list.len();
-    list.resize(start + count, ClipVertex::new(Vec4::ZERO, Vec4::ZERO));
-    for (v, i) in list[start..].iter_mut().zip(numbers) {
-        stage.write(i, v);
+    list.resize(start + count, stage.template());
+    if !stage.batched {
+        for (v, i) in list[start..].iter_mut().zip(numbers) {
+            stage.write(i, v);
+        }
+        return;
+    }
+    let mut numbers = numbers;
+    for chunk in list[start..].chunks_mut(LANES) {
+        // A short last group repeats its first vertex in the unused lanes.
+        let mut idx = [0; LANES];
+        for slot in &mut idx[..chunk.len()] {
+            *slot = numbers.next().unwrap_or_default();
+        }
+        for k in chunk.len()..LANES {
+            idx[k] = idx[0];
+        }
+        stage.write_lanes(&idx, chunk);
     }
 }
 

@@ -30,6 +30,33 @@ use glam::{Vec3, Vec4};
 
 use crate::core::state::{Light, Lighting, Material};
 
+/// How many vertices the batched vertex path runs at once (the lanes of an AVX vector).
+pub const LANES: usize = 8;
+
+/// One value per lane.
+pub type Lanes = [f32; LANES];
+
+/// `a.max(b)` as the vector instruction (and glam's `Vec4::max`) computes it: `b` when
+/// either is NaN or they compare equal.
+#[inline(always)]
+pub fn max_ps(a: f32, b: f32) -> f32 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
+/// `a.min(b)` as the vector instruction computes it (see [`max_ps`]).
+#[inline(always)]
+pub fn min_ps(a: f32, b: f32) -> f32 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
 /// A light with what does not depend on the vertex worked out.
 #[derive(Clone, Copy, Debug)]
 struct Prepared1 {
@@ -138,6 +165,99 @@ impl Prepared {
                 f32::MAX
             },
         }
+    }
+
+    /// Every light is directional and not a spot light: attenuation and spot factor are 1
+    /// and the vertex position does not matter, so [`shade_lanes`](Self::shade_lanes)
+    /// applies.
+    pub fn directional_only(&self) -> bool {
+        self.lights
+            .iter()
+            .all(|pl| pl.directional.is_some() && pl.spot.is_none())
+    }
+
+    /// [`shade`](Self::shade) for `LANES` vertices at once, structure of arrays (normals
+    /// `n[axis][lane]`, colors `color[channel][lane]`), so the lanes vectorize. Only for
+    /// [`directional_only`](Self::directional_only) lighting. The operations and their
+    /// order are `shade`'s, so the results are bit for bit the same; the factor att·spot
+    /// is exactly 1 and left out, and `max`/`min` where `shade` uses vector ones follow
+    /// their NaN rule (the second operand wins).
+    #[inline(always)]
+    pub fn shade_lanes(&self, n: &[Lanes; 3], color: &[Lanes; 4], back: bool) -> [Lanes; 4] {
+        let f = usize::from(back);
+        let face = &self.faces[f];
+        let m = &face.material;
+        let mut c = [[0.0; LANES]; 4];
+        if self.color_material {
+            let (e, a) = (m.emission.to_array(), self.model_ambient.to_array());
+            for ch in 0..3 {
+                for k in 0..LANES {
+                    c[ch][k] = e[ch] + color[ch][k] * a[ch];
+                }
+            }
+        } else {
+            let base = face.base.to_array();
+            for ch in 0..3 {
+                c[ch] = [base[ch]; LANES];
+            }
+        }
+        for pl in &self.lights {
+            let l = &pl.light;
+            let (vp, h) = pl.directional.unwrap_or_default();
+            let mut ndotvp = [0.0; LANES];
+            let mut ndoth = [0.0; LANES];
+            for k in 0..LANES {
+                ndotvp[k] = (n[0][k] * vp.x + n[1][k] * vp.y + n[2][k] * vp.z).max(0.0);
+                ndoth[k] = (n[0][k] * h.x + n[1][k] * h.y + n[2][k] * h.z).max(0.0);
+            }
+            let mut sum = [[0.0; LANES]; 3];
+            if self.color_material {
+                let (la, ld) = (l.ambient.to_array(), l.diffuse.to_array());
+                for ch in 0..3 {
+                    for k in 0..LANES {
+                        sum[ch][k] = color[ch][k] * la[ch] + color[ch][k] * ld[ch] * ndotvp[k];
+                    }
+                }
+            } else {
+                let (pa, pd) = (pl.ambient[f].to_array(), pl.diffuse[f].to_array());
+                for ch in 0..3 {
+                    for k in 0..LANES {
+                        sum[ch][k] = pa[ch] + pd[ch] * ndotvp[k];
+                    }
+                }
+            }
+            // The powers: a library call per lane that needs one, so a loop of its own.
+            let mut power = [1.0; LANES];
+            if m.shininess != 0.0 {
+                for k in 0..LANES {
+                    if ndotvp[k] != 0.0 && !(pl.pow_free[f] && ndoth[k] <= 2.0) {
+                        power[k] = ndoth[k].powf(m.shininess);
+                    }
+                }
+            }
+            let s = pl.specular[f].to_array();
+            for ch in 0..3 {
+                for k in 0..LANES {
+                    let lit = if ndotvp[k] != 0.0 {
+                        sum[ch][k] + s[ch] * power[k]
+                    } else {
+                        sum[ch][k]
+                    };
+                    c[ch][k] += min_ps(max_ps(lit, -f32::MAX), f32::MAX);
+                }
+            }
+        }
+        c[3] = if self.color_material {
+            color[3]
+        } else {
+            [m.diffuse.w; LANES]
+        };
+        for ch in c.iter_mut() {
+            for v in ch.iter_mut() {
+                *v = min_ps(max_ps(*v, 0.0), self.ceiling);
+            }
+        }
+        c
     }
 
     /// The lit color of a vertex at eye position `eye` with eye-space normal `n` (already

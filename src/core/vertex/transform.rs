@@ -5,7 +5,7 @@
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
-use super::lighting::Prepared;
+use super::lighting::{max_ps, min_ps, Lanes, Prepared, LANES};
 use super::{AttribArray, AttribSource, ClipVertex, DrawCall, Primitive};
 use crate::core::clip::MAX_USER_PLANES;
 use crate::core::state::{RenderState, TexGen};
@@ -72,6 +72,14 @@ pub(super) struct Stage<'s, 'd> {
     attenuate: bool,
     planes: usize,
     two_side: bool,
+    /// [`write_lanes`](Self::write_lanes) applies: no skinning, no texgen, and lighting
+    /// (if on) with directional lights only.
+    pub batched: bool,
+    /// The texture coordinates of units whose are constant over the draw (the others
+    /// hold the default).
+    template_tex: [Vec4; TEXTURE_UNITS],
+    /// Some unit's coordinates are not constant.
+    tex_varies: bool,
 }
 
 impl<'s, 'd> Stage<'s, 'd> {
@@ -83,6 +91,26 @@ impl<'s, 'd> Stage<'s, 'd> {
             .as_ref()
             .is_some_and(|l| l.two_side && !matches!(draw.primitive, Primitive::Points))
             && !draw.primitive.is_line();
+        let batched = state.matrix_palette.is_none()
+            && state.texgen.iter().all(Option::is_none)
+            && lighting.as_ref().is_none_or(Prepared::directional_only);
+        let tex: [TexSource<'d>; TEXTURE_UNITS] = std::array::from_fn(|u| {
+            let m = state.texture_matrices[u];
+            let matrix = (m != Mat4::IDENTITY).then_some(m);
+            match (state.texgen[u], draw.texcoord[u]) {
+                (Some(g), _) => TexSource::Gen(g, matrix),
+                (None, AttribSource::Array(a)) => TexSource::Array(a, matrix),
+                (None, AttribSource::Constant(c)) => {
+                    let tc = Vec4::from_array(c);
+                    TexSource::Constant(matrix.map_or(tc, |m| m * tc))
+                }
+            }
+        });
+        let template_tex = tex.map(|src| match src {
+            TexSource::Constant(tc) => tc,
+            _ => Vec4::new(0.0, 0.0, 0.0, 1.0),
+        });
+        let tex_varies = tex.iter().any(|t| !matches!(t, TexSource::Constant(_)));
         Stage {
             state,
             draw,
@@ -107,27 +135,19 @@ impl<'s, 'd> Stage<'s, 'd> {
                 .matrix_palette
                 .as_ref()
                 .map(|p| p.iter().map(|m| (*m, normal_matrix(m))).collect()),
-            tex: std::array::from_fn(|u| {
-                let m = state.texture_matrices[u];
-                let matrix = (m != Mat4::IDENTITY).then_some(m);
-                match (state.texgen[u], draw.texcoord[u]) {
-                    (Some(g), _) => TexSource::Gen(g, matrix),
-                    (None, AttribSource::Array(a)) => TexSource::Array(a, matrix),
-                    (None, AttribSource::Constant(c)) => {
-                        let tc = Vec4::from_array(c);
-                        TexSource::Constant(matrix.map_or(tc, |m| m * tc))
-                    }
-                }
-            }),
+            tex,
+            template_tex,
+            tex_varies,
             points: draw.primitive == Primitive::Points,
             attenuate: state.point_params.attenuation != [1.0, 0.0, 0.0],
             planes: state.clip_planes.len().min(MAX_USER_PLANES),
             two_side,
+            batched,
         }
     }
 
     /// Eye-space position and (untransformed-length) eye-space normal of vertex `i`.
-    #[inline]
+    #[inline(always)]
     fn to_eye(&self, i: usize, p: Vec4) -> (Vec4, Vec3) {
         let n = || self.draw.normal.fetch_vec4(i).truncate();
         let Some(palette) = &self.palette else {
@@ -192,6 +212,23 @@ impl<'s, 'd> Stage<'s, 'd> {
                 (c, c)
             }
         };
+        self.finish(i, pos, color, back_color, eye, normal, out);
+    }
+
+    /// What follows the colors, for either path: texture coordinates, point size, clip
+    /// distances; then every field of `out` written.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn finish(
+        &self,
+        i: usize,
+        pos: Vec4,
+        color: Vec4,
+        back_color: Vec4,
+        eye: Vec4,
+        normal: Vec3,
+        out: &mut ClipVertex,
+    ) {
         let mut tex = [Vec4::ZERO; TEXTURE_UNITS];
         for (t, src) in tex.iter_mut().zip(&self.tex) {
             let (tc, matrix) = match *src {
@@ -247,6 +284,118 @@ impl<'s, 'd> Stage<'s, 'd> {
         *out_clip_dist = clip_dist;
     }
 
+    /// Runs the vertices `idx` (`LANES` of them) into `out` (at most as many: lanes past
+    /// its end are computed and dropped), as [`write`](Self::write) would one by one and
+    /// bit for bit alike, with positions, normals and colors as structures of arrays so
+    /// transform, normalization and lighting vectorize across vertices. Only when
+    /// `batched`.
+    #[inline(always)]
+    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [ClipVertex]) {
+        let mut p = [[0.0; LANES]; 4];
+        let mut n = [[0.0; LANES]; 3];
+        let mut given = [[0.0; LANES]; 4];
+        for k in 0..LANES {
+            let i = idx[k];
+            let v = self.draw.position.fetch_vec4(i).to_array();
+            for r in 0..4 {
+                p[r][k] = v[r];
+            }
+            if self.need_normal {
+                let v = self.draw.normal.fetch_vec4(i).to_array();
+                for r in 0..3 {
+                    n[r][k] = v[r];
+                }
+            }
+            let v = self.draw.color.fetch_vec4(i).to_array();
+            for r in 0..4 {
+                given[r][k] = v[r];
+            }
+        }
+        let pos = mat4_lanes(&self.mvp, &p);
+        let eye = if self.need_eye {
+            mat4_lanes(&self.modelview, &p)
+        } else {
+            [[0.0; LANES]; 4]
+        };
+        let mut normal = [[0.0; LANES]; 3];
+        if self.need_normal {
+            let m = self.normal.to_cols_array_2d();
+            for r in 0..3 {
+                for k in 0..LANES {
+                    normal[r][k] =
+                        (m[0][r] * n[0][k] + m[1][r] * n[1][k] + m[2][r] * n[2][k]) * self.rescale;
+                }
+            }
+            if self.state.normalize {
+                normalize_lanes(&mut normal);
+            }
+        }
+        let (color, back_color) = match &self.lighting {
+            Some(l) => {
+                let front = l.shade_lanes(&normal, &given, false);
+                let back = if self.two_side {
+                    let mut reversed = normal;
+                    for v in reversed.iter_mut().flatten() {
+                        *v = -*v;
+                    }
+                    l.shade_lanes(&reversed, &given, true)
+                } else {
+                    front
+                };
+                (front, back)
+            }
+            None => {
+                let mut c = given;
+                for v in c.iter_mut().flatten() {
+                    *v = min_ps(max_ps(*v, 0.0), 1.0);
+                }
+                (c, c)
+            }
+        };
+        // `out` holds `template()`: only what varies per vertex is written, component by
+        // component (assembling vectors from lanes costs more than the stores).
+        if self.points || self.planes > 0 {
+            for (k, v) in out.iter_mut().enumerate().take(LANES) {
+                self.finish(
+                    idx[k],
+                    lane4(&pos, k),
+                    lane4(&color, k),
+                    lane4(&back_color, k),
+                    lane4(&eye, k),
+                    Vec3::new(normal[0][k], normal[1][k], normal[2][k]),
+                    v,
+                );
+            }
+            return;
+        }
+        for (k, v) in out.iter_mut().enumerate().take(LANES) {
+            store_lane(&mut v.pos, &pos, k);
+            store_lane(&mut v.color, &color, k);
+            store_lane(&mut v.back_color, &back_color, k);
+            v.eye = Vec3::new(eye[0][k], eye[1][k], eye[2][k]);
+        }
+        if self.tex_varies {
+            for (&i, v) in idx.iter().zip(out.iter_mut()) {
+                // Without texgen (not batched) a unit that varies is an array.
+                for (t, src) in v.tex.iter_mut().zip(&self.tex) {
+                    if let TexSource::Array(a, matrix) = *src {
+                        let tc = a.fetch_vec4(i);
+                        *t = matrix.map_or(tc, |m| m * tc);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The vertex `fill` initializes the list with: the values that are the same for every
+    /// vertex of the draw where [`write_lanes`](Self::write_lanes) can skip them
+    /// (constant texture coordinates, no point size, no clip distances).
+    pub fn template(&self) -> ClipVertex {
+        let mut v = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
+        v.tex = self.template_tex;
+        v
+    }
+
     /// ES 1.1 §3.3: the size (array or state) times sqrt(1 / (a + b·d + c·d²)), d the
     /// distance from the eye, clamped to [min, max]. A denominator that is not positive
     /// (the coefficients may be anything) is the limit from above: the size is `max`.
@@ -299,6 +448,47 @@ fn palette_terms(draw: &DrawCall<'_>, i: usize) -> impl Iterator<Item = (usize, 
     })
 }
 
+#[inline(always)]
+fn store_lane(v: &mut Vec4, a: &[Lanes; 4], k: usize) {
+    v.x = a[0][k];
+    v.y = a[1][k];
+    v.z = a[2][k];
+    v.w = a[3][k];
+}
+
+#[inline(always)]
+fn lane4(a: &[Lanes; 4], k: usize) -> Vec4 {
+    Vec4::new(a[0][k], a[1][k], a[2][k], a[3][k])
+}
+
+/// `m · p` for each lane, in `Mat4 * Vec4`'s order: ((x·c₀ + y·c₁) + z·c₂) + w·c₃.
+#[inline(always)]
+fn mat4_lanes(m: &Mat4, p: &[Lanes; 4]) -> [Lanes; 4] {
+    let m = m.to_cols_array_2d();
+    let mut out = [[0.0; LANES]; 4];
+    for r in 0..4 {
+        for k in 0..LANES {
+            out[r][k] =
+                m[0][r] * p[0][k] + m[1][r] * p[1][k] + m[2][r] * p[2][k] + m[3][r] * p[3][k];
+        }
+    }
+    out
+}
+
+/// `Vec3::normalize_or_zero` for each lane, in its order: the reciprocal of the length,
+/// and zero where that is not finite and positive.
+#[inline(always)]
+fn normalize_lanes(v: &mut [Lanes; 3]) {
+    for k in 0..LANES {
+        let len = (v[0][k] * v[0][k] + v[1][k] * v[1][k] + v[2][k] * v[2][k]).sqrt();
+        let rcp = 1.0 / len;
+        let ok = rcp.is_finite() && rcp > 0.0;
+        for axis in v.iter_mut() {
+            axis[k] = if ok { axis[k] * rcp } else { 0.0 };
+        }
+    }
+}
+
 #[inline]
 fn clamp01(c: Vec4) -> Vec4 {
     // max/min rather than clamp: NaN becomes 0 instead of propagating.
@@ -326,6 +516,129 @@ mod tests {
 
     fn bytes(v: &[f32]) -> Vec<u8> {
         v.iter().flat_map(|v| v.to_ne_bytes()).collect()
+    }
+
+    /// Every float of a vertex, as bits, for exact comparison (NaN included).
+    fn bits(v: &ClipVertex) -> Vec<u32> {
+        let mut f = Vec::new();
+        for a in [v.pos, v.color, v.back_color].into_iter().chain(v.tex) {
+            f.extend(a.to_array());
+        }
+        f.extend(v.eye.to_array());
+        f.push(v.point_size);
+        f.extend(v.clip_dist);
+        f.into_iter().map(f32::to_bits).collect()
+    }
+
+    #[test]
+    fn batched_lanes_match_one_vertex_at_a_time_bit_for_bit() {
+        use crate::core::state::{Light, Lighting};
+        // Awkward values: zero, huge, tiny, negative zero, NaN, infinities, and lengths
+        // that make normals zero or non-unit; 13 vertices, so the last group is short.
+        let odd = [
+            0.0,
+            -0.0,
+            1.0,
+            -0.75,
+            3.0e38,
+            1.0e-39,
+            f32::NAN,
+            f32::INFINITY,
+            0.3,
+            -2.5,
+            0.001,
+            7.0,
+            -1.0e-20,
+        ];
+        let n = odd.len();
+        let at = |k: usize, j: usize| odd[(k * 5 + j * 3) % n] + (k as f32) * 0.1;
+        let pos: Vec<f32> = (0..n).flat_map(|k| (0..3).map(move |j| at(k, j))).collect();
+        let nrm: Vec<f32> = (0..n)
+            .flat_map(|k| (0..3).map(move |j| at(k + 1, j)))
+            .collect();
+        let col: Vec<f32> = (0..n)
+            .flat_map(|k| (0..4).map(move |j| at(k + 2, j) * 0.5))
+            .collect();
+        let (pb, nb, cb) = (bytes(&pos), bytes(&nrm), bytes(&col));
+        let fixed: Vec<u8> = (0..2 * n as i32)
+            .flat_map(|k| (k * 40_000 - 300_000).to_ne_bytes())
+            .collect();
+        fn array(data: &[u8], size: usize) -> AttribArray<'_> {
+            AttribArray {
+                data,
+                ty: ComponentType::Float,
+                size,
+                stride: 4 * size,
+                normalized: false,
+            }
+        }
+        let light = |dir: Vec3, spec: f32| Light {
+            ambient: Vec4::new(0.1, 0.2, 0.3, 1.0),
+            diffuse: Vec4::new(0.9, 0.7, 0.5, 1.0),
+            specular: Vec4::splat(spec),
+            position: dir.extend(0.0),
+            ..Light::default()
+        };
+        for case in 0..64u32 {
+            let mut s = RenderState::new(8, 8);
+            s.modelview = Mat4::from_scale(Vec3::new(1.5, 0.5, 2.0))
+                * Mat4::from_rotation_x(0.4)
+                * Mat4::from_translation(Vec3::new(0.25, -1.0, 3.0));
+            s.projection = Mat4::perspective_rh_gl(0.9, 1.3, 0.5, 20.0);
+            s.normalize = case & 1 != 0;
+            s.rescale_normal = case & 2 != 0;
+            if case & 4 != 0 {
+                let mut l = Lighting {
+                    lights: vec![
+                        light(Vec3::new(0.3, 0.5, 1.0), 1.0),
+                        light(
+                            Vec3::new(-1.0, 0.2, 0.1),
+                            if case & 16 != 0 { 0.0 } else { 0.6 },
+                        ),
+                    ],
+                    two_side: case & 8 != 0,
+                    color_material: case & 16 == 0,
+                    ..Lighting::default()
+                };
+                l.front.specular = Vec4::new(0.5, 0.6, 0.7, 1.0);
+                l.front.shininess = 20.0;
+                l.back.shininess = 0.0;
+                l.back.specular = Vec4::splat(0.3);
+                s.lighting = Some(l);
+            }
+            // Texture coordinates: a constant, a float array under a texture matrix and a
+            // 16.16 array; or, with points and a clip plane, every field per vertex.
+            let prim = if case & 32 != 0 {
+                s.clip_planes = vec![Vec4::new(0.5, -1.0, 0.25, 2.0)];
+                s.point_params.attenuation = [1.0, 0.5, 0.25];
+                Primitive::Points
+            } else {
+                Primitive::Triangles
+            };
+            let mut d = draw(&pb, prim, n);
+            d.normal = AttribSource::Array(array(&nb, 3));
+            d.color = AttribSource::Array(array(&cb, 4));
+            if case & 2 != 0 {
+                d.texcoord[1] = AttribSource::Constant([0.5, 0.25, 0.0, 2.0]);
+                d.texcoord[2] = AttribSource::Array(array(&cb, 4));
+                s.texture_matrices[2] = Mat4::from_rotation_z(0.3);
+                d.texcoord[3] = AttribSource::Array(AttribArray {
+                    data: &fixed,
+                    ty: ComponentType::Fixed,
+                    size: 2,
+                    stride: 8,
+                    normalized: false,
+                });
+            }
+            let stage = Stage::new(&s, &d);
+            assert!(stage.batched);
+            let v = run(&s, &d).unwrap();
+            for i in 0..n {
+                let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
+                stage.write(i, &mut one);
+                assert_eq!(bits(&v[i]), bits(&one), "case {case}, vertex {i}");
+            }
+        }
     }
 
     #[test]
