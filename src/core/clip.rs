@@ -59,13 +59,8 @@ fn distances(v: &ClipVertex) -> [f32; PLANES] {
     distances_with(v, 1.0)
 }
 
-/// Distances to the guard band's planes (x, y), the frustum's (z, w) and the user planes.
-#[inline]
-fn guard_distances(v: &ClipVertex) -> [f32; PLANES] {
-    distances_with(v, GUARD)
-}
-
-/// The distance to plane `plane` of [`guard_distances`].
+/// The distance to plane `plane` of the guard band's planes (x, y), the frustum's (z, w)
+/// and the user planes.
 #[inline]
 fn guard_distance(v: &ClipVertex, plane: usize) -> f32 {
     let p = v.pos;
@@ -105,15 +100,32 @@ fn plane_count(user: usize) -> usize {
 /// is outside of.
 #[inline]
 pub fn outcode(v: &ClipVertex, user: usize) -> u16 {
-    let d = guard_distances(v);
-    let mut code = 0;
-    for (i, &v) in d[..plane_count(user)].iter().enumerate() {
-        // NaN compares false, so it counts as outside too.
-        if v.is_nan() || v < 0.0 {
-            code |= 1 << i;
-        }
+    // The distances of `guard_distance`, tested one by one: the array of all thirteen
+    // costs more than the tests themselves. NaN compares false, so it counts as outside.
+    let out = |d: f32| u16::from(!(d >= 0.0));
+    let p = v.pos;
+    let g = GUARD * p.w;
+    let mut code = out(g + p.x)
+        | out(g - p.x) << 1
+        | out(g + p.y) << 2
+        | out(g - p.y) << 3
+        | out(p.w + p.z) << 4
+        | out(p.w - p.z) << 5
+        | out(p.w - W_MIN) << 6;
+    for (i, &d) in v.clip_dist[..user.min(MAX_USER_PLANES)].iter().enumerate() {
+        code |= out(d) << (FRUSTUM_PLANES + i);
     }
     code
+}
+
+/// A bit per frustum x or y plane that the vertex is strictly outside of.
+#[inline]
+fn frustum_code(v: &ClipVertex) -> u8 {
+    let p = v.pos;
+    u8::from(p.x < -p.w)
+        | u8::from(p.x > p.w) << 1
+        | u8::from(p.y < -p.w) << 2
+        | u8::from(p.y > p.w) << 3
 }
 
 /// Clips segment (a, b) against the clip volume and the first `user` user planes,
@@ -154,22 +166,32 @@ pub fn point(v: &ClipVertex, user: usize) -> bool {
 
 /// Clips triangle (a, b, c) against the guard band, the near, far and w planes and the first
 /// `user` user planes, and calls `emit` with the resulting convex polygon (at least three
-/// vertices, in the original winding), or not at all when nothing is left.
+/// vertices, in the original winding), or not at all when nothing is left. The polygon is
+/// passed by reference: most triangles need no clipping and reach `emit` without copying
+/// their vertices.
 pub fn triangle(
     a: &ClipVertex,
     b: &ClipVertex,
     c: &ClipVertex,
     user: usize,
-    emit: impl FnOnce(&[ClipVertex]),
+    emit: impl FnOnce(&[&ClipVertex]),
 ) {
     // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
     // than let NaN reach the rasterizer.
     if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
         return;
     }
+    // Outside one of the frustum's x or y planes with all three vertices, the triangle is
+    // outside it everywhere (the plane's half-space is convex, whatever the signs of w), so
+    // it could only cover pixels beyond the viewport, which the rasterizer never draws.
+    // Most such triangles lie inside the guard band and would otherwise be set up in full
+    // only for their bounding box to come out empty.
+    if frustum_code(a) & frustum_code(b) & frustum_code(c) != 0 {
+        return;
+    }
     let codes = [outcode(a, user), outcode(b, user), outcode(c, user)];
     if codes[0] | codes[1] | codes[2] == 0 {
-        emit(&[*a, *b, *c]);
+        emit(&[a, b, c]);
         return;
     }
     if codes[0] & codes[1] & codes[2] != 0 {
@@ -247,7 +269,8 @@ pub fn triangle(
         }
         std::mem::swap(&mut poly, &mut next);
     }
-    emit(&poly[..n]);
+    let refs: [&ClipVertex; MAX_POLY] = std::array::from_fn(|i| &poly[i.min(n - 1)]);
+    emit(&refs[..n]);
 }
 
 #[cfg(test)]
@@ -284,12 +307,29 @@ mod tests {
             &v(3., 0., 0., 1.),
             &v(2., 1., 0., 1.),
             0,
+            |_| called = true,
+        );
+        assert!(!called, "outside the frustum's right plane");
+        triangle(
+            &v(0.5, 0., 0., 1.),
+            &v(3., 0., 0., 1.),
+            &v(2., 1., 0., 1.),
+            0,
             |p| got = p.len(),
         );
         assert_eq!(
             got, 3,
-            "outside the frustum but inside the band: kept whole"
+            "crossing the frustum's edge inside the band: kept whole"
         );
+        got = 0;
+        triangle(
+            &v(2., 0., 0., 1.),
+            &v(-3., 0., 0., -1.),
+            &v(2., 1., 0., 1.),
+            0,
+            |p| got = p.len(),
+        );
+        assert_eq!(got, 0, "x > w at every vertex, one behind the eye");
     }
 
     #[test]
@@ -300,7 +340,7 @@ mod tests {
             &v(0., 0., 0., -1.),
             &v(0.5, 0.5, 0., 1.),
             0,
-            |p| out = p.to_vec(),
+            |p| out = p.iter().map(|v| **v).collect(),
         );
         assert!(out.len() >= 3);
         for p in &out {

@@ -182,7 +182,7 @@ fn set_up(
             clip::triangle(a, b, c, user, |poly| {
                 // The clipped polygon is convex: fan it out from its first vertex.
                 for i in 1..poly.len() - 1 {
-                    let tri = [&poly[0], &poly[i], &poly[i + 1]];
+                    let tri = [poly[0], poly[i], poly[i + 1]];
                     if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
                         emit(raster::Prim::Triangle(t));
                     }

@@ -10,6 +10,22 @@ use super::{SUBPIXEL_BITS, TEXTURE_UNITS};
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 const HALF: i64 = ONE / 2;
 
+/// `v.round() as i64`, bit for bit (half away from zero, NaN to 0, saturating), without
+/// the libm call `f64::round` compiles to on baseline x86-64 (no SSE4.1 `roundsd`).
+#[inline]
+pub(crate) fn round_i64(v: f64) -> i64 {
+    // The truncation is exact below 2⁶³, and so is the remainder: a fraction of v.
+    let t = v as i64;
+    let r = v - t as f64;
+    if r >= 0.5 {
+        t.saturating_add(1)
+    } else if r <= -0.5 {
+        t.saturating_sub(1)
+    } else {
+        t
+    }
+}
+
 /// An edge function `E(x, y) = a·x + b·y + c` over subpixel coordinates relative to the
 /// triangle's origin; positive inside. `bias` is 0 for edges that own the pixels exactly on
 /// them (top and left edges) and 1 otherwise, so `E − bias ≥ 0` is the coverage test and a
@@ -296,10 +312,7 @@ pub fn triangle(
         let g = clip::GUARD as f64;
         let x = (p.x as f64 * iw).clamp(-g, g) * hw + cx;
         let y = (p.y as f64 * iw).clamp(-g, g) * hh + cy;
-        win[i] = (
-            (x * ONE as f64).round() as i64,
-            (y * ONE as f64).round() as i64,
-        );
+        win[i] = (round_i64(x * ONE as f64), round_i64(y * ONE as f64));
         z[i] = ((p.z as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
         inv_w[i] = iw;
     }
@@ -383,4 +396,43 @@ pub fn triangle(
             fog,
         },
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::round_i64;
+
+    #[test]
+    fn inline_rounding_matches_f64_round() {
+        let mut values = vec![
+            0.0,
+            -0.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN,
+            f64::MIN_POSITIVE,
+            9.3e18,
+            -9.3e18,
+            (1u64 << 52) as f64 + 0.5,
+            4503599627370495.5,
+            -4503599627370495.5,
+            0.49999999999999994,
+            -0.49999999999999994,
+        ];
+        let mut x = 0x2545_f491_4f6c_dd1d_u64;
+        for i in -2000..2000 {
+            values.push(i as f64 * 0.25);
+            values.push(i as f64 * 0.5 + 1e-9);
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            values.push(f64::from_bits(x));
+            values.push((x >> 11) as f64 / (1u64 << 30) as f64 - 4096.0);
+        }
+        for v in values {
+            assert_eq!(round_i64(v), v.round() as i64, "{v:e}");
+        }
+    }
 }
