@@ -133,6 +133,7 @@ impl Frame {
         self.pending += 1;
     }
 
+    #[inline]
     pub fn prim(&mut self, p: Prim, key: u32) {
         let b = p.bbox();
         let i = self.prims.len() as u32;

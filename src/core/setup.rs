@@ -75,14 +75,15 @@ struct Weights([Plane; 3]);
 
 impl Weights {
     fn new(edges: &[Edge; 3], area: f64) -> Weights {
-        Weights(edges.map(|e| {
+        let weight = |e: &Edge| {
             let (a, b, c) = (e.a as f64, e.b as f64, e.c as f64);
             Plane {
                 dx: a * ONE as f64 / area,
                 dy: b * ONE as f64 / area,
                 c: (a * HALF as f64 + b * HALF as f64 + c) / area,
             }
-        }))
+        };
+        Weights([weight(&edges[0]), weight(&edges[1]), weight(&edges[2])])
     }
 }
 
@@ -289,6 +290,7 @@ pub struct Triangle {
 /// Sets up a clipped triangle for rasterization inside `bounds` of a target with `depth`
 /// bits, or returns `None` when it is culled, has no area, or cannot touch `bounds`.
 /// `provoking` supplies the flat-shaded color.
+#[inline]
 pub fn triangle(
     state: &RenderState,
     v: [&ClipVertex; 3],
@@ -299,7 +301,7 @@ pub fn triangle(
     let vp = state.viewport;
     let (hw, hh) = (vp.width as f64 * 0.5, vp.height as f64 * 0.5);
     let (cx, cy) = (vp.x as f64 + hw, vp.y as f64 + hh);
-    let [n, f] = state.depth_range.map(f64::from);
+    let (n, f) = (state.depth_range[0] as f64, state.depth_range[1] as f64);
     let mut win = [(0i64, 0i64); 3];
     let mut z = [0f64; 3];
     let mut inv_w = [0f64; 3];
@@ -316,11 +318,26 @@ pub fn triangle(
         z[i] = ((p.z as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
         inv_w[i] = iw;
     }
+    // Facing and culling need only the snapped vertices (the area is the same from any
+    // origin), so culled triangles skip the bounding box and the planes.
+    let area = (win[1].0 - win[0].0) * (win[2].1 - win[0].1)
+        - (win[2].0 - win[0].0) * (win[1].1 - win[0].1);
+    if area == 0 {
+        return None;
+    }
+    let ccw = area > 0;
+    let front = ccw == (state.front_face == Winding::Ccw);
+    match state.cull {
+        Some(CullFace::FrontAndBack) => return None,
+        Some(CullFace::Front) if front => return None,
+        Some(CullFace::Back) if !front => return None,
+        _ => {}
+    }
     // Pixel bounding box: pixel centers strictly inside the snapped extent.
-    let min_x = win.iter().map(|p| p.0).min()?;
-    let max_x = win.iter().map(|p| p.0).max()?;
-    let min_y = win.iter().map(|p| p.1).min()?;
-    let max_y = win.iter().map(|p| p.1).max()?;
+    let min_x = win[0].0.min(win[1].0).min(win[2].0);
+    let max_x = win[0].0.max(win[1].0).max(win[2].0);
+    let min_y = win[0].1.min(win[1].1).min(win[2].1);
+    let max_y = win[0].1.max(win[1].1).max(win[2].1);
     let to_px = |lo: i64, hi: i64| -> (i64, i64) {
         ((lo - HALF).div_euclid(ONE), (hi - HALF).div_euclid(ONE) + 1)
     };
@@ -339,22 +356,16 @@ pub fn triangle(
     }
     // Work relative to the bounding box so every coordinate is small (see MAX_VIEWPORT_DIM).
     let (ox, oy) = (bbox.x0 as i64 * ONE, bbox.y0 as i64 * ONE);
-    let p: [(i64, i64); 3] = win.map(|(x, y)| (x - ox, y - oy));
-    let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
-    if area == 0 {
-        return None;
-    }
-    let ccw = area > 0;
-    let front = ccw == (state.front_face == Winding::Ccw);
-    match state.cull {
-        Some(CullFace::FrontAndBack) => return None,
-        Some(CullFace::Front) if front => return None,
-        Some(CullFace::Back) if !front => return None,
-        _ => {}
-    }
-    // Reorder to counter-clockwise so one coverage test serves both windings.
+    // Reordered to counter-clockwise so one coverage test serves both windings. Arrays are
+    // indexed explicitly here and below: `array::map` and `from_fn` leave their closures
+    // as calls, which cost more than the arithmetic they wrap.
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
-    let q = order.map(|i| p[i]);
+    let q = [win[order[0]], win[order[1]], win[order[2]]];
+    let q = [
+        (q[0].0 - ox, q[0].1 - oy),
+        (q[1].0 - ox, q[1].1 - oy),
+        (q[2].0 - ox, q[2].1 - oy),
+    ];
     let edges = [
         Edge::new(q[1].0, q[1].1, q[2].0, q[2].1),
         Edge::new(q[2].0, q[2].1, q[0].0, q[0].1),
@@ -362,8 +373,9 @@ pub fn triangle(
     ];
     let area = area.abs() as f64;
     let weights = Weights::new(&edges, area);
-    let plane = |f: &dyn Fn(usize) -> f64| Plane::through(&weights, order.map(f));
-    let mut z_plane = plane(&|i| z[i]);
+    // The plane through per-vertex values `v`, in the original vertex order.
+    let through = |v: [f64; 3]| Plane::through(&weights, [v[order[0]], v[order[1]], v[order[2]]]);
+    let mut z_plane = through(z);
     if let (Some(o), Some(df)) = (state.polygon_offset, depth) {
         // ES 1.1 §3.5.5: factor × the larger depth slope (per pixel, in window space) plus
         // units × the smallest resolvable difference, one step of the depth buffer.
@@ -374,21 +386,29 @@ pub fn triangle(
     // colors otherwise).
     let color = |v: &ClipVertex| if front { v.color } else { v.back_color };
     let flat = (state.shade_model == ShadeModel::Flat).then(|| color(provoking).to_array());
-    let color_w = std::array::from_fn(|c| {
-        if flat.is_some() {
-            Plane::default()
-        } else {
-            plane(&|i| color(v[i])[c] as f64 * inv_w[i])
+    let mut color_w = [Plane::default(); 4];
+    if flat.is_none() {
+        let c = [
+            color(v[0]).to_array(),
+            color(v[1]).to_array(),
+            color(v[2]).to_array(),
+        ];
+        for (ch, plane) in color_w.iter_mut().enumerate() {
+            *plane = through([
+                c[0][ch] as f64 * inv_w[0],
+                c[1][ch] as f64 * inv_w[1],
+                c[2][ch] as f64 * inv_w[2],
+            ]);
         }
-    });
-    let (tex, fog) = attribute_planes(state, &v, &inv_w, &|f| plane(&|i| f(i)));
+    }
+    let (tex, fog) = attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]));
     Some(Triangle {
         edges,
         bbox,
         shading: Shading {
             origin: (bbox.x0, bbox.y0),
             z: z_plane,
-            inv_w: plane(&|i| inv_w[i]),
+            inv_w: through(inv_w),
             color_w,
             flat,
             coverage: None,

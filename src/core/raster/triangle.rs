@@ -28,12 +28,22 @@ impl Quotient {
     fn new(n: i64, dn: i64, d: i64, ceil: bool) -> Quotient {
         // ⌈n/d⌉ = −⌊−n/d⌋: both cases track a floor of ±n.
         let (n, dn) = if ceil { (-n, -dn) } else { (n, dn) };
+        // One division each for quotient and remainder (d > 0), then the floor's fix-up.
+        let floor = |n: i64| {
+            let (q, r) = (n / d, n % d);
+            if r < 0 {
+                (q - 1, r + d)
+            } else {
+                (q, r)
+            }
+        };
+        let ((q, r), (dq, dr)) = (floor(n), floor(dn));
         Quotient {
-            q: n.div_euclid(d),
-            r: n.rem_euclid(d),
+            q,
+            r,
             d,
-            dq: dn.div_euclid(d),
-            dr: dn.rem_euclid(d),
+            dq,
+            dr,
             ceil,
         }
     }
@@ -81,7 +91,8 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
     let width = (x1 - x0) as i64;
     let ry = (y0 - oy) as i64;
     // E(k) = base + k·step ≥ 0 on the first row; base grows by b·ONE per row.
-    let mut bounds = t.edges.map(|e| {
+    // Indexed rather than `array::map`, whose closure stays a call.
+    let bound = |e: &super::super::setup::Edge| {
         let base = e.at_center((x0 - ox) as i64, ry) - e.bias;
         let dbase = e.b << SUBPIXEL_BITS;
         let step = e.a << SUBPIXEL_BITS;
@@ -92,7 +103,8 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
             s if s < 0 => Bound::High(Quotient::new(base, dbase, -s, false)),
             _ => Bound::Row { base, dbase },
         }
-    });
+    };
+    let mut bounds = [bound(&t.edges[0]), bound(&t.edges[1]), bound(&t.edges[2])];
     for y in y0..y1 {
         let (mut lo, mut hi) = (0i64, width);
         for b in &mut bounds {
