@@ -186,7 +186,7 @@ fn set_up(
                 for i in 1..poly.len() - 1 {
                     let tri = [poly[0], poly[i], poly[i + 1]];
                     if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
-                        emit(raster::Prim::Triangle(t));
+                        emit(t);
                     }
                 }
             });

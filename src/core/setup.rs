@@ -2,6 +2,7 @@
 //! subpixels, integer edge functions with a top-left fill rule, facing and culling.
 
 use super::clip;
+use super::raster::Prim;
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
 use super::target::{DepthFormat, Rect};
 use super::vertex::ClipVertex;
@@ -201,12 +202,16 @@ pub(crate) fn attribute_planes(
     let mut planes = Box::new([TexPlanes::default(); TEXTURE_UNITS]);
     for (u, unit) in state.textures.iter().enumerate() {
         let Some(unit) = unit else { continue };
+        // Primitives have at most three vertices: arrays, not a heap allocation each.
         let n = v.len();
-        let q: Vec<f64> = (0..n).map(|i| v[i].tex[u].w as f64).collect();
-        let s: Vec<f64> = (0..n).map(|i| v[i].tex[u].x as f64).collect();
-        let t: Vec<f64> = (0..n).map(|i| v[i].tex[u].y as f64).collect();
-        let os = period_offset(&s, &q, unit.sampler.wrap_s.period());
-        let ot = period_offset(&t, &q, unit.sampler.wrap_t.period());
+        let (mut q, mut s, mut t) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+        for (i, v) in v.iter().enumerate() {
+            q[i] = v.tex[u].w as f64;
+            s[i] = v.tex[u].x as f64;
+            t[i] = v.tex[u].y as f64;
+        }
+        let os = period_offset(&s[..n], &q[..n], unit.sampler.wrap_s.period());
+        let ot = period_offset(&t[..n], &q[..n], unit.sampler.wrap_t.period());
         planes[u] = TexPlanes {
             s: plane(&|i| (s[i] - os * q[i]) * inv_w[i]),
             t: plane(&|i| (t[i] - ot * q[i]) * inv_w[i]),
@@ -289,15 +294,15 @@ pub struct Triangle {
 
 /// Sets up a clipped triangle for rasterization inside `bounds` of a target with `depth`
 /// bits, or returns `None` when it is culled, has no area, or cannot touch `bounds`.
-/// `provoking` supplies the flat-shaded color.
-#[inline]
+/// `provoking` supplies the flat-shaded color. The triangle comes already wrapped as a
+/// primitive, built where the caller receives it rather than copied into one.
 pub fn triangle(
     state: &RenderState,
     v: [&ClipVertex; 3],
     provoking: &ClipVertex,
     bounds: Rect,
     depth: Option<DepthFormat>,
-) -> Option<Triangle> {
+) -> Option<Prim> {
     let vp = state.viewport;
     let (hw, hh) = (vp.width as f64 * 0.5, vp.height as f64 * 0.5);
     let (cx, cy) = (vp.x as f64 + hw, vp.y as f64 + hh);
@@ -401,8 +406,13 @@ pub fn triangle(
             ]);
         }
     }
-    let (tex, fog) = attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]));
-    Some(Triangle {
+    // Checked here too: without fog or textures the call would build nothing.
+    let (tex, fog) = if state.fog.is_none() && state.textures.iter().all(Option::is_none) {
+        (None, Plane::default())
+    } else {
+        attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]))
+    };
+    Some(Prim::Triangle(Triangle {
         edges,
         bbox,
         shading: Shading {
@@ -415,7 +425,7 @@ pub fn triangle(
             tex,
             fog,
         },
-    })
+    }))
 }
 
 #[cfg(test)]

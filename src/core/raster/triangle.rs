@@ -11,23 +11,20 @@ use super::super::target::Rect;
 use super::super::SUBPIXEL_BITS;
 use super::Span;
 
-/// ⌊n / d⌋ (with `ceil`, ⌈n / d⌉) for a numerator that grows by `dn` per row and a fixed
-/// positive `d`, kept exact with the remainder.
+/// ⌊n / d⌋ for a numerator that grows by `dn` per row and a fixed positive `d`, kept
+/// exact with the remainder.
 #[derive(Clone, Copy)]
 struct Quotient {
     q: i64,
-    /// The remainder of the floor tracked (of n, or of −n for `ceil`), in [0, d).
+    /// The remainder, in [0, d).
     r: i64,
     d: i64,
     dq: i64,
     dr: i64,
-    ceil: bool,
 }
 
 impl Quotient {
-    fn new(n: i64, dn: i64, d: i64, ceil: bool) -> Quotient {
-        // ⌈n/d⌉ = −⌊−n/d⌋: both cases track a floor of ±n.
-        let (n, dn) = if ceil { (-n, -dn) } else { (n, dn) };
+    fn new(n: i64, dn: i64, d: i64) -> Quotient {
         // One division each for quotient and remainder (d > 0), then the floor's fix-up.
         let floor = |n: i64| {
             let (q, r) = (n / d, n % d);
@@ -38,23 +35,7 @@ impl Quotient {
             }
         };
         let ((q, r), (dq, dr)) = (floor(n), floor(dn));
-        Quotient {
-            q,
-            r,
-            d,
-            dq,
-            dr,
-            ceil,
-        }
-    }
-
-    #[inline]
-    fn value(&self) -> i64 {
-        if self.ceil {
-            -self.q
-        } else {
-            self.q
-        }
+        Quotient { q, r, d, dq, dr }
     }
 
     #[inline]
@@ -71,9 +52,9 @@ impl Quotient {
 /// What one edge allows on a row, as a function of the pixel index k = x − x0.
 #[derive(Clone, Copy)]
 enum Bound {
-    /// k ≥ value.
+    /// k ≥ −q: the ceiling ⌈−n/d⌉ is the negated floor ⌊n/d⌋.
     Low(Quotient),
-    /// k < value.
+    /// k ≤ q.
     High(Quotient),
     /// Every pixel or none, by the sign of the edge function (`base`, growing by `dbase`).
     Row { base: i64, dbase: i64 },
@@ -97,10 +78,10 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
         let dbase = e.b << SUBPIXEL_BITS;
         let step = e.a << SUBPIXEL_BITS;
         match step {
-            // k ≥ ⌈−base / step⌉
-            s if s > 0 => Bound::Low(Quotient::new(-base, -dbase, s, true)),
+            // k ≥ ⌈−base / step⌉ = −⌊base / step⌋
+            s if s > 0 => Bound::Low(Quotient::new(base, dbase, s)),
             // k ≤ ⌊base / −step⌋
-            s if s < 0 => Bound::High(Quotient::new(base, dbase, -s, false)),
+            s if s < 0 => Bound::High(Quotient::new(base, dbase, -s)),
             _ => Bound::Row { base, dbase },
         }
     };
@@ -110,11 +91,11 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
         for b in &mut bounds {
             match b {
                 Bound::Low(q) => {
-                    lo = lo.max(q.value());
+                    lo = lo.max(-q.q);
                     q.step();
                 }
                 Bound::High(q) => {
-                    hi = hi.min(q.value() + 1);
+                    hi = hi.min(q.q + 1);
                     q.step();
                 }
                 Bound::Row { base, dbase } => {
