@@ -104,8 +104,8 @@ fn plane_count(user: usize) -> usize {
 pub fn outcode(v: &ClipVertex, user: usize) -> u16 {
     // The distances of `guard_distance`, four at a time: the low planes (0, 2, 4, 6:
     // x + g, y + g, z + w, w − W_MIN) in one vector and the high planes (1, 3, 5: g − x,
-    // g − y, w − z) in another, whose spare lane reads 0, inside. `!(d >= 0)` counts NaN
-    // as outside.
+    // g − y, w − z) in another, whose spare lane reads 0, inside. Negating `d >= 0` counts
+    // NaN as outside.
     let p = v.pos;
     let g = GUARD * p.w;
     let low = Vec4::new(p.x, p.y, p.z, p.w) + Vec4::new(g, g, p.w, -W_MIN);
@@ -113,7 +113,7 @@ pub fn outcode(v: &ClipVertex, user: usize) -> u16 {
     let outside = |d: Vec4| !d.cmpge(Vec4::ZERO).bitmask() as usize & 0xf;
     let mut code = SPREAD[outside(low)] | SPREAD[outside(high)] << 1;
     for (i, &d) in v.clip_dist[..user.min(MAX_USER_PLANES)].iter().enumerate() {
-        code |= u16::from(!(d >= 0.0)) << (FRUSTUM_PLANES + i);
+        code |= u16::from(d.is_nan() || d < 0.0) << (FRUSTUM_PLANES + i);
     }
     code
 }
@@ -367,7 +367,8 @@ mod tests {
                         for user in [0, 3, 6] {
                             let code = outcode(&p, user);
                             for plane in 0..plane_count(user) {
-                                let out = !(guard_distance(&p, plane) >= 0.0);
+                                let d = guard_distance(&p, plane);
+                                let out = d.is_nan() || d < 0.0;
                                 assert_eq!(code >> plane & 1 == 1, out, "{p:?} {plane}");
                             }
                             assert_eq!(code >> plane_count(user), 0);

@@ -34,7 +34,9 @@ impl Quotient {
                 (q, r)
             }
         };
-        let ((q, r), (dq, dr)) = (floor(n), floor(dn));
+        // No step (a vertical edge, or a single row) needs no division.
+        let (q, r) = floor(n);
+        let (dq, dr) = if dn == 0 { (0, 0) } else { floor(dn) };
         Quotient { q, r, d, dq, dr }
     }
 
@@ -74,9 +76,15 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
     // E(k) = base + k·step ≥ 0 on the first row; base grows by b·ONE per row.
     // Indexed rather than `array::map`, whose closure stays a call.
     let bound = |e: &super::super::setup::Edge| {
-        let base = e.at_center((x0 - ox) as i64, ry) - e.bias;
-        let dbase = e.b << SUBPIXEL_BITS;
-        let step = e.a << SUBPIXEL_BITS;
+        let base = e.at_center((x0 - ox) as i64, ry) - e.bias();
+        // A single row never steps (common: most small triangles meet a band in a row or
+        // two), so it leaves the step at 0.
+        let dbase = if y1 - y0 > 1 {
+            (e.b as i64) << SUBPIXEL_BITS
+        } else {
+            0
+        };
+        let step = (e.a as i64) << SUBPIXEL_BITS;
         match step {
             // k ≥ ⌈−base / step⌉ = −⌊base / step⌋
             s if s > 0 => Bound::Low(Quotient::new(base, dbase, s)),
