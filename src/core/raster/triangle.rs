@@ -62,6 +62,48 @@ enum Bound {
     Row { base: i64, dbase: i64 },
 }
 
+/// Bounding boxes at most this many pixels wide test each pixel center against the edges
+/// directly: for the few pixels of a small triangle that is cheaper than the divisions
+/// that find the ends of its rows.
+const NARROW: i64 = 4;
+
+/// [`spans`] for a bounding box at most [`NARROW`] pixels wide: the same test
+/// `E − bias ≥ 0`, evaluated at every pixel center, so the same pixels. A row's covered
+/// pixels are one interval (the triangle is convex), from the first to the last.
+fn narrow_spans(t: &Triangle, rows: std::ops::Range<i32>, ry: i64, mut emit: impl FnMut(Span)) {
+    let Rect { x0, x1, .. } = t.bbox;
+    let width = (x1 - x0) as i64;
+    let ox = t.shading.origin.0;
+    // Per edge: E − bias at the row's first pixel, its growth per row and per pixel.
+    let edge = |e: &super::super::setup::Edge| {
+        (
+            e.at_center((x0 - ox) as i64, ry) - e.bias(),
+            (e.b as i64) << SUBPIXEL_BITS,
+            (e.a as i64) << SUBPIXEL_BITS,
+        )
+    };
+    let mut edges = [edge(&t.edges[0]), edge(&t.edges[1]), edge(&t.edges[2])];
+    for y in rows {
+        let (mut lo, mut hi) = (width, 0);
+        for k in 0..width {
+            if edges.iter().all(|&(base, _, step)| base + k * step >= 0) {
+                lo = lo.min(k);
+                hi = k + 1;
+            }
+        }
+        for (base, dbase, _) in &mut edges {
+            *base += *dbase;
+        }
+        if lo < hi {
+            emit(Span {
+                y,
+                x0: x0 + lo as i32,
+                x1: x0 + hi as i32,
+            });
+        }
+    }
+}
+
 /// Calls `emit` for every run of pixels on rows `rows` whose centers `t` covers under the
 /// top-left rule.
 pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span)) {
@@ -73,6 +115,10 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
     let (ox, oy) = t.shading.origin;
     let width = (x1 - x0) as i64;
     let ry = (y0 - oy) as i64;
+    if width <= NARROW {
+        narrow_spans(t, y0..y1, ry, emit);
+        return;
+    }
     // E(k) = base + k·step ≥ 0 on the first row; base grows by b·ONE per row.
     // Indexed rather than `array::map`, whose closure stays a call.
     let bound = |e: &super::super::setup::Edge| {
