@@ -79,7 +79,7 @@ proptest! {
             .map(|i| ClipVertex::new(Vec4::new(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3] * 0.5 + 2.0), Vec4::ONE))
             .collect();
         let mut out = Vec::new();
-        clip::triangle(&vs[0], &vs[1], &vs[2], 0, |p| out = p.to_vec());
+        clip::triangle(&vs[0], &vs[1], &vs[2], 0, |p| out = p.iter().map(|v| **v).collect());
         for q in &out {
             let w = q.pos.w;
             prop_assert!(w >= clip::W_MIN && q.pos.is_finite());

@@ -70,7 +70,10 @@ pub struct Frame {
     format: TargetFormat,
     width: u32,
     height: u32,
-    prims: Vec<(Prim, u32)>,
+    prims: Vec<Prim>,
+    /// The fragment key of each primitive, apart so that a primitive moves into `prims`
+    /// straight from where it was built instead of through a tuple.
+    prim_keys: Vec<u32>,
     keys: Vec<FragmentKey>,
     bands: Vec<Vec<Command>>,
     pending: usize,
@@ -84,6 +87,7 @@ impl Frame {
             width,
             height,
             prims: Vec::new(),
+            prim_keys: Vec::new(),
             keys: Vec::new(),
             bands: vec![Vec::new(); height.div_ceil(BAND_ROWS) as usize],
             pending: 0,
@@ -133,10 +137,12 @@ impl Frame {
         self.pending += 1;
     }
 
+    #[inline]
     pub fn prim(&mut self, p: Prim, key: u32) {
         let b = p.bbox();
         let i = self.prims.len() as u32;
-        self.prims.push((p, key));
+        self.prims.push(p);
+        self.prim_keys.push(key);
         self.record(b.y0, b.y1, Command::Prim(i));
     }
 
@@ -194,6 +200,7 @@ impl Frame {
             }
         }
         self.prims.clear();
+        self.prim_keys.clear();
         self.keys.clear();
         self.bands.iter_mut().for_each(Vec::clear);
         self.pending = 0;
@@ -204,8 +211,8 @@ impl Frame {
         for c in cmds {
             match *c {
                 Command::Prim(i) => {
-                    let (p, k) = &self.prims[i as usize];
-                    let key = &self.keys[*k as usize];
+                    let p = &self.prims[i as usize];
+                    let key = &self.keys[self.prim_keys[i as usize] as usize];
                     let shading = p.shading();
                     p.spans(rows.clone(), |span| key.shade(shading, span, band));
                 }

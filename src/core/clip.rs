@@ -13,6 +13,8 @@
 //! triangle keeps its own vertices, so the pixels it covers do not depend on the viewport it
 //! happens to cross, and most triangles near the edges are not clipped at all.
 
+use glam::Vec4;
+
 use super::vertex::ClipVertex;
 
 /// The smallest w that survives clipping. A vertex at (0, 0, 0, 0) lies inside all six
@@ -59,13 +61,8 @@ fn distances(v: &ClipVertex) -> [f32; PLANES] {
     distances_with(v, 1.0)
 }
 
-/// Distances to the guard band's planes (x, y), the frustum's (z, w) and the user planes.
-#[inline]
-fn guard_distances(v: &ClipVertex) -> [f32; PLANES] {
-    distances_with(v, GUARD)
-}
-
-/// The distance to plane `plane` of [`guard_distances`].
+/// The distance to plane `plane` of the guard band's planes (x, y), the frustum's (z, w)
+/// and the user planes.
 #[inline]
 fn guard_distance(v: &ClipVertex, plane: usize) -> f32 {
     let p = v.pos;
@@ -105,15 +102,41 @@ fn plane_count(user: usize) -> usize {
 /// is outside of.
 #[inline]
 pub fn outcode(v: &ClipVertex, user: usize) -> u16 {
-    let d = guard_distances(v);
-    let mut code = 0;
-    for (i, &v) in d[..plane_count(user)].iter().enumerate() {
-        // NaN compares false, so it counts as outside too.
-        if v.is_nan() || v < 0.0 {
-            code |= 1 << i;
-        }
+    // The distances of `guard_distance`, four at a time: the low planes (0, 2, 4, 6:
+    // x + g, y + g, z + w, w − W_MIN) in one vector and the high planes (1, 3, 5: g − x,
+    // g − y, w − z) in another, whose spare lane reads 0, inside. Negating `d >= 0` counts
+    // NaN as outside.
+    let p = v.pos;
+    let g = GUARD * p.w;
+    let low = Vec4::new(p.x, p.y, p.z, p.w) + Vec4::new(g, g, p.w, -W_MIN);
+    let high = Vec4::new(g, g, p.w, 0.0) - Vec4::new(p.x, p.y, p.z, 0.0);
+    let outside = |d: Vec4| !d.cmpge(Vec4::ZERO).bitmask() as usize & 0xf;
+    let mut code = SPREAD[outside(low)] | SPREAD[outside(high)] << 1;
+    for (i, &d) in v.clip_dist[..user.min(MAX_USER_PLANES)].iter().enumerate() {
+        code |= u16::from(d.is_nan() || d < 0.0) << (FRUSTUM_PLANES + i);
     }
     code
+}
+
+/// Bit i of the index moved to bit 2i.
+const SPREAD: [u16; 16] = {
+    let mut t = [0; 16];
+    let mut i = 0;
+    while i < 16 {
+        t[i] = (i & 1 | (i & 2) << 1 | (i & 4) << 2 | (i & 8) << 3) as u16;
+        i += 1;
+    }
+    t
+};
+
+/// A bit per frustum x or y plane that the vertex is strictly outside of (x < −w,
+/// y < −w, x > w, y > w; negating is exact).
+#[inline]
+fn frustum_code(v: &ClipVertex) -> u32 {
+    let p = v.pos;
+    Vec4::new(-p.x, -p.y, p.x, p.y)
+        .cmpgt(Vec4::splat(p.w))
+        .bitmask()
 }
 
 /// Clips segment (a, b) against the clip volume and the first `user` user planes,
@@ -154,22 +177,32 @@ pub fn point(v: &ClipVertex, user: usize) -> bool {
 
 /// Clips triangle (a, b, c) against the guard band, the near, far and w planes and the first
 /// `user` user planes, and calls `emit` with the resulting convex polygon (at least three
-/// vertices, in the original winding), or not at all when nothing is left.
+/// vertices, in the original winding), or not at all when nothing is left. The polygon is
+/// passed by reference: most triangles need no clipping and reach `emit` without copying
+/// their vertices.
 pub fn triangle(
     a: &ClipVertex,
     b: &ClipVertex,
     c: &ClipVertex,
     user: usize,
-    emit: impl FnOnce(&[ClipVertex]),
+    emit: impl FnOnce(&[&ClipVertex]),
 ) {
     // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
     // than let NaN reach the rasterizer.
     if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
         return;
     }
+    // Outside one of the frustum's x or y planes with all three vertices, the triangle is
+    // outside it everywhere (the plane's half-space is convex, whatever the signs of w), so
+    // it could only cover pixels beyond the viewport, which the rasterizer never draws.
+    // Most such triangles lie inside the guard band and would otherwise be set up in full
+    // only for their bounding box to come out empty.
+    if frustum_code(a) & frustum_code(b) & frustum_code(c) != 0 {
+        return;
+    }
     let codes = [outcode(a, user), outcode(b, user), outcode(c, user)];
     if codes[0] | codes[1] | codes[2] == 0 {
-        emit(&[*a, *b, *c]);
+        emit(&[a, b, c]);
         return;
     }
     if codes[0] & codes[1] & codes[2] != 0 {
@@ -247,13 +280,13 @@ pub fn triangle(
         }
         std::mem::swap(&mut poly, &mut next);
     }
-    emit(&poly[..n]);
+    let refs: [&ClipVertex; MAX_POLY] = std::array::from_fn(|i| &poly[i.min(n - 1)]);
+    emit(&refs[..n]);
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::Vec4;
 
     fn v(x: f32, y: f32, z: f32, w: f32) -> ClipVertex {
         ClipVertex::new(Vec4::new(x, y, z, w), Vec4::ONE)
@@ -284,12 +317,67 @@ mod tests {
             &v(3., 0., 0., 1.),
             &v(2., 1., 0., 1.),
             0,
+            |_| called = true,
+        );
+        assert!(!called, "outside the frustum's right plane");
+        triangle(
+            &v(0.5, 0., 0., 1.),
+            &v(3., 0., 0., 1.),
+            &v(2., 1., 0., 1.),
+            0,
             |p| got = p.len(),
         );
         assert_eq!(
             got, 3,
-            "outside the frustum but inside the band: kept whole"
+            "crossing the frustum's edge inside the band: kept whole"
         );
+        got = 0;
+        triangle(
+            &v(2., 0., 0., 1.),
+            &v(0.5, 0., 0., -1.),
+            &v(2., 1., 0., 1.),
+            0,
+            |p| got = p.len(),
+        );
+        assert_eq!(got, 0, "x > w at every vertex, one behind the eye");
+    }
+
+    #[test]
+    fn outcodes_match_the_plane_distances() {
+        let vals = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            7.9,
+            -8.1,
+            1e-31,
+            f32::NAN,
+            f32::INFINITY,
+            0.5,
+        ];
+        let mut n = 0;
+        for &x in &vals {
+            for &y in &vals {
+                for &z in &vals[..6] {
+                    for &w in &vals {
+                        let mut p = v(x, y, z, w);
+                        p.clip_dist = [x, -y, z, w, f32::NAN, 0.0];
+                        n += 1;
+                        for user in [0, 3, 6] {
+                            let code = outcode(&p, user);
+                            for plane in 0..plane_count(user) {
+                                let d = guard_distance(&p, plane);
+                                let out = d.is_nan() || d < 0.0;
+                                assert_eq!(code >> plane & 1 == 1, out, "{p:?} {plane}");
+                            }
+                            assert_eq!(code >> plane_count(user), 0);
+                        }
+                    }
+                }
+            }
+        }
+        assert!(n > 1000);
     }
 
     #[test]
@@ -300,7 +388,7 @@ mod tests {
             &v(0., 0., 0., -1.),
             &v(0.5, 0.5, 0., 1.),
             0,
-            |p| out = p.to_vec(),
+            |p| out = p.iter().map(|v| **v).collect(),
         );
         assert!(out.len() >= 3);
         for p in &out {

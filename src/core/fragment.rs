@@ -547,14 +547,28 @@ impl SpanInterp {
     #[inline]
     fn new(t: &Shading, span: Span, perspective: Quality) -> SpanInterp {
         let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
-        let mut c0 = t.color_w.map(|p| p.at(px, py) as f32);
-        let mut dc = t.color_w.map(|p| p.dx as f32);
+        // Written out per channel: `array::map` leaves its closure as a call per span.
+        let cw = &t.color_w;
+        let mut c0 = [
+            cw[0].at(px, py) as f32,
+            cw[1].at(px, py) as f32,
+            cw[2].at(px, py) as f32,
+            cw[3].at(px, py) as f32,
+        ];
+        let mut dc = [
+            cw[0].dx as f32,
+            cw[1].dx as f32,
+            cw[2].dx as f32,
+            cw[3].dx as f32,
+        ];
         let inv_w0 = t.inv_w.at(px, py) as f32;
         let divide = if t.inv_w.dx == 0.0 && t.inv_w.dy == 0.0 {
             // Constant w: fold it into the planes once.
             let w = 1.0 / inv_w0;
-            c0 = c0.map(|c| c * w);
-            dc = dc.map(|c| c * w);
+            for (c, d) in c0.iter_mut().zip(&mut dc) {
+                *c *= w;
+                *d *= w;
+            }
             Divide::None
         } else if perspective == Quality::Fastest {
             Divide::Stepped

@@ -2,6 +2,7 @@
 //! subpixels, integer edge functions with a top-left fill rule, facing and culling.
 
 use super::clip;
+use super::raster::Prim;
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
 use super::target::{DepthFormat, Rect};
 use super::vertex::ClipVertex;
@@ -10,36 +11,61 @@ use super::{SUBPIXEL_BITS, TEXTURE_UNITS};
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 const HALF: i64 = ONE / 2;
 
+/// `v.round() as i64`, bit for bit (half away from zero, NaN to 0, saturating), without
+/// the libm call `f64::round` compiles to on baseline x86-64 (no SSE4.1 `roundsd`).
+#[inline]
+pub(crate) fn round_i64(v: f64) -> i64 {
+    // The truncation is exact below 2⁶³, and so is the remainder: a fraction of v.
+    let t = v as i64;
+    let r = v - t as f64;
+    if r >= 0.5 {
+        t.saturating_add(1)
+    } else if r <= -0.5 {
+        t.saturating_sub(1)
+    } else {
+        t
+    }
+}
+
 /// An edge function `E(x, y) = a·x + b·y + c` over subpixel coordinates relative to the
-/// triangle's origin; positive inside. `bias` is 0 for edges that own the pixels exactly on
-/// them (top and left edges) and 1 otherwise, so `E − bias ≥ 0` is the coverage test and a
-/// pixel on an edge shared by two triangles is drawn by exactly one of them.
+/// triangle's origin; positive inside. [`Edge::bias`] is 0 for edges that own the pixels
+/// exactly on them (top and left edges) and 1 otherwise, so `E − bias ≥ 0` is the coverage
+/// test and a pixel on an edge shared by two triangles is drawn by exactly one of them.
+///
+/// `a` and `b` are differences of snapped coordinates, below 2²⁵ in magnitude (see
+/// [`clip::GUARD`]), so they fit an i32; with the bias derived from them rather than stored
+/// an edge takes 16 bytes, and every primitive copied into a frame 48 fewer.
 #[derive(Clone, Copy, Debug)]
 pub struct Edge {
-    pub a: i64,
-    pub b: i64,
+    pub a: i32,
+    pub b: i32,
     pub c: i64,
-    pub bias: i64,
 }
 
 impl Edge {
     fn new(x0: i64, y0: i64, x1: i64, y1: i64) -> Edge {
         let (dx, dy) = (x1 - x0, y1 - y0);
-        // With y up and counter-clockwise vertices the inside lies to the left of each edge:
-        // a downward edge is a left edge, a leftward horizontal edge is a top edge.
-        let owns = dy < 0 || (dy == 0 && dx < 0);
+        debug_assert!(dx.abs() < 1 << 31 && dy.abs() < 1 << 31);
         Edge {
-            a: -dy,
-            b: dx,
+            a: -dy as i32,
+            b: dx as i32,
             c: dy * x0 - dx * y0,
-            bias: i64::from(!owns),
         }
+    }
+
+    /// 0 when the edge owns the pixel centers exactly on it, 1 otherwise. With y up and
+    /// counter-clockwise vertices the inside lies to the left of each edge: a downward edge
+    /// (a > 0) is a left edge, a leftward horizontal edge (a = 0, b < 0) a top edge.
+    #[inline]
+    pub fn bias(&self) -> i64 {
+        let owns = self.a > 0 || (self.a == 0 && self.b < 0);
+        i64::from(!owns)
     }
 
     /// The edge function at the center of pixel (px, py), given relative to the origin.
     #[inline]
     pub fn at_center(&self, px: i64, py: i64) -> i64 {
-        self.a * (px * ONE + HALF) + self.b * (py * ONE + HALF) + self.c
+        self.a as i64 * (px * ONE + HALF) + self.b as i64 * (py * ONE + HALF) + self.c
     }
 }
 
@@ -59,14 +85,15 @@ struct Weights([Plane; 3]);
 
 impl Weights {
     fn new(edges: &[Edge; 3], area: f64) -> Weights {
-        Weights(edges.map(|e| {
+        let weight = |e: &Edge| {
             let (a, b, c) = (e.a as f64, e.b as f64, e.c as f64);
             Plane {
                 dx: a * ONE as f64 / area,
                 dy: b * ONE as f64 / area,
                 c: (a * HALF as f64 + b * HALF as f64 + c) / area,
             }
-        }))
+        };
+        Weights([weight(&edges[0]), weight(&edges[1]), weight(&edges[2])])
     }
 }
 
@@ -184,12 +211,16 @@ pub(crate) fn attribute_planes(
     let mut planes = Box::new([TexPlanes::default(); TEXTURE_UNITS]);
     for (u, unit) in state.textures.iter().enumerate() {
         let Some(unit) = unit else { continue };
+        // Primitives have at most three vertices: arrays, not a heap allocation each.
         let n = v.len();
-        let q: Vec<f64> = (0..n).map(|i| v[i].tex[u].w as f64).collect();
-        let s: Vec<f64> = (0..n).map(|i| v[i].tex[u].x as f64).collect();
-        let t: Vec<f64> = (0..n).map(|i| v[i].tex[u].y as f64).collect();
-        let os = period_offset(&s, &q, unit.sampler.wrap_s.period());
-        let ot = period_offset(&t, &q, unit.sampler.wrap_t.period());
+        let (mut q, mut s, mut t) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+        for (i, v) in v.iter().enumerate() {
+            q[i] = v.tex[u].w as f64;
+            s[i] = v.tex[u].x as f64;
+            t[i] = v.tex[u].y as f64;
+        }
+        let os = period_offset(&s[..n], &q[..n], unit.sampler.wrap_s.period());
+        let ot = period_offset(&t[..n], &q[..n], unit.sampler.wrap_t.period());
         planes[u] = TexPlanes {
             s: plane(&|i| (s[i] - os * q[i]) * inv_w[i]),
             t: plane(&|i| (t[i] - ot * q[i]) * inv_w[i]),
@@ -272,18 +303,19 @@ pub struct Triangle {
 
 /// Sets up a clipped triangle for rasterization inside `bounds` of a target with `depth`
 /// bits, or returns `None` when it is culled, has no area, or cannot touch `bounds`.
-/// `provoking` supplies the flat-shaded color.
+/// `provoking` supplies the flat-shaded color. The triangle comes already wrapped as a
+/// primitive, built where the caller receives it rather than copied into one.
 pub fn triangle(
     state: &RenderState,
     v: [&ClipVertex; 3],
     provoking: &ClipVertex,
     bounds: Rect,
     depth: Option<DepthFormat>,
-) -> Option<Triangle> {
+) -> Option<Prim> {
     let vp = state.viewport;
     let (hw, hh) = (vp.width as f64 * 0.5, vp.height as f64 * 0.5);
     let (cx, cy) = (vp.x as f64 + hw, vp.y as f64 + hh);
-    let [n, f] = state.depth_range.map(f64::from);
+    let (n, f) = (state.depth_range[0] as f64, state.depth_range[1] as f64);
     let mut win = [(0i64, 0i64); 3];
     let mut z = [0f64; 3];
     let mut inv_w = [0f64; 3];
@@ -296,18 +328,30 @@ pub fn triangle(
         let g = clip::GUARD as f64;
         let x = (p.x as f64 * iw).clamp(-g, g) * hw + cx;
         let y = (p.y as f64 * iw).clamp(-g, g) * hh + cy;
-        win[i] = (
-            (x * ONE as f64).round() as i64,
-            (y * ONE as f64).round() as i64,
-        );
+        win[i] = (round_i64(x * ONE as f64), round_i64(y * ONE as f64));
         z[i] = ((p.z as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
         inv_w[i] = iw;
     }
+    // Facing and culling need only the snapped vertices (the area is the same from any
+    // origin), so culled triangles skip the bounding box and the planes.
+    let area = (win[1].0 - win[0].0) * (win[2].1 - win[0].1)
+        - (win[2].0 - win[0].0) * (win[1].1 - win[0].1);
+    if area == 0 {
+        return None;
+    }
+    let ccw = area > 0;
+    let front = ccw == (state.front_face == Winding::Ccw);
+    match state.cull {
+        Some(CullFace::FrontAndBack) => return None,
+        Some(CullFace::Front) if front => return None,
+        Some(CullFace::Back) if !front => return None,
+        _ => {}
+    }
     // Pixel bounding box: pixel centers strictly inside the snapped extent.
-    let min_x = win.iter().map(|p| p.0).min()?;
-    let max_x = win.iter().map(|p| p.0).max()?;
-    let min_y = win.iter().map(|p| p.1).min()?;
-    let max_y = win.iter().map(|p| p.1).max()?;
+    let min_x = win[0].0.min(win[1].0).min(win[2].0);
+    let max_x = win[0].0.max(win[1].0).max(win[2].0);
+    let min_y = win[0].1.min(win[1].1).min(win[2].1);
+    let max_y = win[0].1.max(win[1].1).max(win[2].1);
     let to_px = |lo: i64, hi: i64| -> (i64, i64) {
         ((lo - HALF).div_euclid(ONE), (hi - HALF).div_euclid(ONE) + 1)
     };
@@ -326,22 +370,16 @@ pub fn triangle(
     }
     // Work relative to the bounding box so every coordinate is small (see MAX_VIEWPORT_DIM).
     let (ox, oy) = (bbox.x0 as i64 * ONE, bbox.y0 as i64 * ONE);
-    let p: [(i64, i64); 3] = win.map(|(x, y)| (x - ox, y - oy));
-    let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
-    if area == 0 {
-        return None;
-    }
-    let ccw = area > 0;
-    let front = ccw == (state.front_face == Winding::Ccw);
-    match state.cull {
-        Some(CullFace::FrontAndBack) => return None,
-        Some(CullFace::Front) if front => return None,
-        Some(CullFace::Back) if !front => return None,
-        _ => {}
-    }
-    // Reorder to counter-clockwise so one coverage test serves both windings.
+    // Reordered to counter-clockwise so one coverage test serves both windings. Arrays are
+    // indexed explicitly here and below: `array::map` and `from_fn` leave their closures
+    // as calls, which cost more than the arithmetic they wrap.
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
-    let q = order.map(|i| p[i]);
+    let q = [win[order[0]], win[order[1]], win[order[2]]];
+    let q = [
+        (q[0].0 - ox, q[0].1 - oy),
+        (q[1].0 - ox, q[1].1 - oy),
+        (q[2].0 - ox, q[2].1 - oy),
+    ];
     let edges = [
         Edge::new(q[1].0, q[1].1, q[2].0, q[2].1),
         Edge::new(q[2].0, q[2].1, q[0].0, q[0].1),
@@ -349,8 +387,9 @@ pub fn triangle(
     ];
     let area = area.abs() as f64;
     let weights = Weights::new(&edges, area);
-    let plane = |f: &dyn Fn(usize) -> f64| Plane::through(&weights, order.map(f));
-    let mut z_plane = plane(&|i| z[i]);
+    // The plane through per-vertex values `v`, in the original vertex order.
+    let through = |v: [f64; 3]| Plane::through(&weights, [v[order[0]], v[order[1]], v[order[2]]]);
+    let mut z_plane = through(z);
     if let (Some(o), Some(df)) = (state.polygon_offset, depth) {
         // ES 1.1 §3.5.5: factor × the larger depth slope (per pixel, in window space) plus
         // units × the smallest resolvable difference, one step of the depth buffer.
@@ -361,26 +400,78 @@ pub fn triangle(
     // colors otherwise).
     let color = |v: &ClipVertex| if front { v.color } else { v.back_color };
     let flat = (state.shade_model == ShadeModel::Flat).then(|| color(provoking).to_array());
-    let color_w = std::array::from_fn(|c| {
-        if flat.is_some() {
-            Plane::default()
-        } else {
-            plane(&|i| color(v[i])[c] as f64 * inv_w[i])
+    let mut color_w = [Plane::default(); 4];
+    if flat.is_none() {
+        let c = [
+            color(v[0]).to_array(),
+            color(v[1]).to_array(),
+            color(v[2]).to_array(),
+        ];
+        for (ch, plane) in color_w.iter_mut().enumerate() {
+            *plane = through([
+                c[0][ch] as f64 * inv_w[0],
+                c[1][ch] as f64 * inv_w[1],
+                c[2][ch] as f64 * inv_w[2],
+            ]);
         }
-    });
-    let (tex, fog) = attribute_planes(state, &v, &inv_w, &|f| plane(&|i| f(i)));
-    Some(Triangle {
+    }
+    // Checked here too: without fog or textures the call would build nothing.
+    let (tex, fog) = if state.fog.is_none() && state.textures.iter().all(Option::is_none) {
+        (None, Plane::default())
+    } else {
+        attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]))
+    };
+    Some(Prim::Triangle(Triangle {
         edges,
         bbox,
         shading: Shading {
             origin: (bbox.x0, bbox.y0),
             z: z_plane,
-            inv_w: plane(&|i| inv_w[i]),
+            inv_w: through(inv_w),
             color_w,
             flat,
             coverage: None,
             tex,
             fog,
         },
-    })
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::round_i64;
+
+    #[test]
+    fn inline_rounding_matches_f64_round() {
+        let mut values = vec![
+            0.0,
+            -0.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN,
+            f64::MIN_POSITIVE,
+            9.3e18,
+            -9.3e18,
+            (1u64 << 52) as f64 + 0.5,
+            4503599627370495.5,
+            -4503599627370495.5,
+            0.49999999999999994,
+            -0.49999999999999994,
+        ];
+        let mut x = 0x2545_f491_4f6c_dd1d_u64;
+        for i in -2000..2000 {
+            values.push(i as f64 * 0.25);
+            values.push(i as f64 * 0.5 + 1e-9);
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            values.push(f64::from_bits(x));
+            values.push((x >> 11) as f64 / (1u64 << 30) as f64 - 4096.0);
+        }
+        for v in values {
+            assert_eq!(round_i64(v), v.round() as i64, "{v:e}");
+        }
+    }
 }

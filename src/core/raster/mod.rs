@@ -73,7 +73,15 @@ pub(crate) fn window(
     let vp = state.viewport;
     let inv_w = 1.0 / w;
     let snap = |v: f64| {
-        (v * (1 << super::SUBPIXEL_BITS) as f64).round() / (1 << super::SUBPIXEL_BITS) as f64
+        let v = v * (1 << super::SUBPIXEL_BITS) as f64;
+        // From 2⁵² on every f64 is an integer; below, the inline rounding (sign of zero
+        // kept) equals f64::round.
+        let r = if v.abs() < (1u64 << 52) as f64 {
+            (super::setup::round_i64(v) as f64).copysign(v)
+        } else {
+            v
+        };
+        r / (1 << super::SUBPIXEL_BITS) as f64
     };
     let [n, f] = state.depth_range.map(f64::from);
     let x = (pos.x as f64 * inv_w + 1.0) * 0.5 * vp.width as f64 + vp.x as f64;

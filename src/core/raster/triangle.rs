@@ -11,40 +11,33 @@ use super::super::target::Rect;
 use super::super::SUBPIXEL_BITS;
 use super::Span;
 
-/// ⌊n / d⌋ (with `ceil`, ⌈n / d⌉) for a numerator that grows by `dn` per row and a fixed
-/// positive `d`, kept exact with the remainder.
+/// ⌊n / d⌋ for a numerator that grows by `dn` per row and a fixed positive `d`, kept
+/// exact with the remainder.
 #[derive(Clone, Copy)]
 struct Quotient {
     q: i64,
-    /// The remainder of the floor tracked (of n, or of −n for `ceil`), in [0, d).
+    /// The remainder, in [0, d).
     r: i64,
     d: i64,
     dq: i64,
     dr: i64,
-    ceil: bool,
 }
 
 impl Quotient {
-    fn new(n: i64, dn: i64, d: i64, ceil: bool) -> Quotient {
-        // ⌈n/d⌉ = −⌊−n/d⌋: both cases track a floor of ±n.
-        let (n, dn) = if ceil { (-n, -dn) } else { (n, dn) };
-        Quotient {
-            q: n.div_euclid(d),
-            r: n.rem_euclid(d),
-            d,
-            dq: dn.div_euclid(d),
-            dr: dn.rem_euclid(d),
-            ceil,
-        }
-    }
-
-    #[inline]
-    fn value(&self) -> i64 {
-        if self.ceil {
-            -self.q
-        } else {
-            self.q
-        }
+    fn new(n: i64, dn: i64, d: i64) -> Quotient {
+        // One division each for quotient and remainder (d > 0), then the floor's fix-up.
+        let floor = |n: i64| {
+            let (q, r) = (n / d, n % d);
+            if r < 0 {
+                (q - 1, r + d)
+            } else {
+                (q, r)
+            }
+        };
+        // No step (a vertical edge, or a single row) needs no division.
+        let (q, r) = floor(n);
+        let (dq, dr) = if dn == 0 { (0, 0) } else { floor(dn) };
+        Quotient { q, r, d, dq, dr }
     }
 
     #[inline]
@@ -61,12 +54,54 @@ impl Quotient {
 /// What one edge allows on a row, as a function of the pixel index k = x − x0.
 #[derive(Clone, Copy)]
 enum Bound {
-    /// k ≥ value.
+    /// k ≥ −q: the ceiling ⌈−n/d⌉ is the negated floor ⌊n/d⌋.
     Low(Quotient),
-    /// k < value.
+    /// k ≤ q.
     High(Quotient),
     /// Every pixel or none, by the sign of the edge function (`base`, growing by `dbase`).
     Row { base: i64, dbase: i64 },
+}
+
+/// Bounding boxes at most this many pixels wide test each pixel center against the edges
+/// directly: for the few pixels of a small triangle that is cheaper than the divisions
+/// that find the ends of its rows.
+const NARROW: i64 = 4;
+
+/// [`spans`] for a bounding box at most [`NARROW`] pixels wide: the same test
+/// `E − bias ≥ 0`, evaluated at every pixel center, so the same pixels. A row's covered
+/// pixels are one interval (the triangle is convex), from the first to the last.
+fn narrow_spans(t: &Triangle, rows: std::ops::Range<i32>, ry: i64, mut emit: impl FnMut(Span)) {
+    let Rect { x0, x1, .. } = t.bbox;
+    let width = (x1 - x0) as i64;
+    let ox = t.shading.origin.0;
+    // Per edge: E − bias at the row's first pixel, its growth per row and per pixel.
+    let edge = |e: &super::super::setup::Edge| {
+        (
+            e.at_center((x0 - ox) as i64, ry) - e.bias(),
+            (e.b as i64) << SUBPIXEL_BITS,
+            (e.a as i64) << SUBPIXEL_BITS,
+        )
+    };
+    let mut edges = [edge(&t.edges[0]), edge(&t.edges[1]), edge(&t.edges[2])];
+    for y in rows {
+        let (mut lo, mut hi) = (width, 0);
+        for k in 0..width {
+            if edges.iter().all(|&(base, _, step)| base + k * step >= 0) {
+                lo = lo.min(k);
+                hi = k + 1;
+            }
+        }
+        for (base, dbase, _) in &mut edges {
+            *base += *dbase;
+        }
+        if lo < hi {
+            emit(Span {
+                y,
+                x0: x0 + lo as i32,
+                x1: x0 + hi as i32,
+            });
+        }
+    }
 }
 
 /// Calls `emit` for every run of pixels on rows `rows` whose centers `t` covers under the
@@ -80,29 +115,41 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
     let (ox, oy) = t.shading.origin;
     let width = (x1 - x0) as i64;
     let ry = (y0 - oy) as i64;
+    if width <= NARROW {
+        narrow_spans(t, y0..y1, ry, emit);
+        return;
+    }
     // E(k) = base + k·step ≥ 0 on the first row; base grows by b·ONE per row.
-    let mut bounds = t.edges.map(|e| {
-        let base = e.at_center((x0 - ox) as i64, ry) - e.bias;
-        let dbase = e.b << SUBPIXEL_BITS;
-        let step = e.a << SUBPIXEL_BITS;
+    // Indexed rather than `array::map`, whose closure stays a call.
+    let bound = |e: &super::super::setup::Edge| {
+        let base = e.at_center((x0 - ox) as i64, ry) - e.bias();
+        // A single row never steps (common: most small triangles meet a band in a row or
+        // two), so it leaves the step at 0.
+        let dbase = if y1 - y0 > 1 {
+            (e.b as i64) << SUBPIXEL_BITS
+        } else {
+            0
+        };
+        let step = (e.a as i64) << SUBPIXEL_BITS;
         match step {
-            // k ≥ ⌈−base / step⌉
-            s if s > 0 => Bound::Low(Quotient::new(-base, -dbase, s, true)),
+            // k ≥ ⌈−base / step⌉ = −⌊base / step⌋
+            s if s > 0 => Bound::Low(Quotient::new(base, dbase, s)),
             // k ≤ ⌊base / −step⌋
-            s if s < 0 => Bound::High(Quotient::new(base, dbase, -s, false)),
+            s if s < 0 => Bound::High(Quotient::new(base, dbase, -s)),
             _ => Bound::Row { base, dbase },
         }
-    });
+    };
+    let mut bounds = [bound(&t.edges[0]), bound(&t.edges[1]), bound(&t.edges[2])];
     for y in y0..y1 {
         let (mut lo, mut hi) = (0i64, width);
         for b in &mut bounds {
             match b {
                 Bound::Low(q) => {
-                    lo = lo.max(q.value());
+                    lo = lo.max(-q.q);
                     q.step();
                 }
                 Bound::High(q) => {
-                    hi = hi.min(q.value() + 1);
+                    hi = hi.min(q.q + 1);
                     q.step();
                 }
                 Bound::Row { base, dbase } => {
