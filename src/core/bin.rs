@@ -9,8 +9,6 @@
 
 use std::sync::{Arc, Mutex, OnceLock};
 
-use rayon::prelude::*;
-
 use super::fragment::FragmentKey;
 use super::raster::Prim;
 use super::target::{BandMut, Rect, Target, TargetFormat};
@@ -36,6 +34,24 @@ pub fn thread_count() -> usize {
             .filter(|&n| n > 0)
             .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
     })
+}
+
+/// Runs `work` on the calling thread and on `threads − 1` persistent workers at once, and
+/// returns when every copy has returned. The caller starts at once rather than handing the
+/// whole job to the pool and sleeping: on a machine where waking a worker takes
+/// milliseconds, a late worker then finds the work taken and costs nothing, where before
+/// the job could not even begin until one woke. Callers share the work through a queue, so
+/// who does which part never changes the result.
+pub fn together(threads: usize, work: impl Fn() + Sync) {
+    match (threads > 1).then(|| pool(threads - 1)).flatten() {
+        Some(p) => p.in_place_scope(|s| {
+            for _ in 1..threads {
+                s.spawn(|_| work());
+            }
+            work();
+        }),
+        None => work(),
+    }
 }
 
 /// The persistent workers for `threads` threads (built on first use per count and kept, so
@@ -184,21 +200,14 @@ impl Frame {
         } else {
             threads.clamp(1, bands.len().max(1))
         };
-        match (threads > 1).then(|| pool(threads)).flatten() {
-            // Each band is replayed whole by whichever worker takes it, so the pixels do not
-            // depend on the scheduling.
-            Some(p) => p.install(|| {
-                bands
-                    .par_iter_mut()
-                    .with_max_len(1)
-                    .for_each(|(band, cmds)| this.replay(band, cmds))
-            }),
-            None => {
-                for (band, cmds) in &mut bands {
-                    this.replay(band, cmds);
-                }
-            }
-        }
+        // Each band is replayed whole by whichever thread takes it, so the pixels do not
+        // depend on the scheduling.
+        let queue = Mutex::new(bands.iter_mut());
+        together(threads, || loop {
+            let next = queue.lock().unwrap_or_else(|e| e.into_inner()).next();
+            let Some((band, cmds)) = next else { break };
+            this.replay(band, cmds);
+        });
         self.prims.clear();
         self.prim_keys.clear();
         self.keys.clear();

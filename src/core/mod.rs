@@ -3,7 +3,8 @@
 //! [`DrawCall`] and hand it to [`render`], which runs
 //! vertex → clip → setup → raster → fragment into a [`Target`].
 
-use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
 pub mod bin;
 pub mod clip;
@@ -78,19 +79,28 @@ pub fn record_flushing(
     let depth = frame.format().depth;
     let pieces = pieces(draw);
     let threads = bin::thread_count().min(pieces.len());
-    let Some(pool) = (threads > 1).then(|| bin::pool(threads)).flatten() else {
+    if threads <= 1 {
         return record_serially(state, &pieces, frame, &mut make_room, key, bounds, depth);
-    };
+    }
     let collect = |piece: &DrawCall<'_>| {
         let mut prims = Vec::with_capacity(piece.indices.len());
         set_up(state, piece, bounds, depth, &mut |p| prims.push(p)).map(|()| prims)
     };
     for batch in pieces.chunks(threads) {
-        let prims: Vec<Result<Vec<raster::Prim>, OutOfMemory>> =
-            pool.install(|| batch.par_iter().with_max_len(1).map(collect).collect());
-        for piece in prims {
+        // Each piece's primitives land in its own slot, binned below in piece order.
+        type Slot = Mutex<Option<Result<Vec<raster::Prim>, OutOfMemory>>>;
+        let slots: Vec<Slot> = batch.iter().map(|_| Mutex::new(None)).collect();
+        let next = AtomicUsize::new(0);
+        bin::together(threads, || loop {
+            let k = next.fetch_add(1, Ordering::Relaxed);
+            let Some(piece) = batch.get(k) else { break };
+            let prims = collect(piece);
+            *slots[k].lock().unwrap_or_else(|e| e.into_inner()) = Some(prims);
+        });
+        for slot in slots {
             make_room(frame, &mut key);
-            for p in piece? {
+            let piece = slot.into_inner().unwrap_or_else(|e| e.into_inner());
+            for p in piece.expect("every piece of the batch was set up")? {
                 frame.prim(p, key);
             }
         }
