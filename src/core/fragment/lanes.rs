@@ -688,20 +688,12 @@ fn sample_level(
         return true;
     }
     let (wi, hi) = (img.width as i32, img.height as i32);
-    if !linear {
-        wrap_lanes(sm.wrap_s, &mut i, wi);
-        wrap_lanes(sm.wrap_t, &mut jj, hi);
-        let words = fetch(texels, shift, &i, &jj);
-        for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
-            *out = scaled(unpack(&words, c), scale);
-        }
-        return true;
-    }
     // A weight of exactly 0 makes the lerp return its first operand bit for bit (x + d·0 is
     // x for texel values), so the texels it would blend in need not be fetched. Texels
-    // mapped 1:1 onto pixels (sprites, 2D blits, UI) sample texel centers: one fetch of four.
+    // mapped 1:1 onto pixels (sprites, 2D blits, UI) sample texel centers: one fetch of four,
+    // as NEAREST.
     let (flat_s, flat_t) = (every(&a, |a| a == 0.0), every(&b, |b| b == 0.0));
-    if flat_s && flat_t {
+    if !linear || (flat_s && flat_t) {
         wrap_lanes(sm.wrap_s, &mut i, wi);
         wrap_lanes(sm.wrap_t, &mut jj, hi);
         let words = fetch(texels, shift, &i, &jj);
@@ -721,32 +713,29 @@ fn sample_level(
     for j in 0..LANES {
         adjacent &= i1[j] == i[j].wrapping_add(1);
     }
-    if adjacent && !flat_s && !flat_t {
+    let (w00, w10, w01, w11) = if adjacent && !flat_s && !flat_t {
         let (w00, w10) = fetch_pairs(texels, shift, &i, &jj);
         let (w01, w11) = fetch_pairs(texels, shift, &i, &j1);
-        for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
-            let top = lerp_lanes(&unpack(&w00, c), &unpack(&w10, c), &a);
-            let bottom = lerp_lanes(&unpack(&w01, c), &unpack(&w11, c), &a);
-            *out = scaled(lerp_lanes(&top, &bottom, &b), scale);
-        }
-        return true;
-    }
-    let w00 = fetch(texels, shift, &i, &jj);
-    let w10 = if flat_s {
-        w00
+        (w00, w10, w01, w11)
     } else {
-        fetch(texels, shift, &i1, &jj)
-    };
-    let (w01, w11) = if flat_t {
-        (w00, w10)
-    } else if flat_s {
-        let w01 = fetch(texels, shift, &i, &j1);
-        (w01, w01)
-    } else {
-        (
-            fetch(texels, shift, &i, &j1),
-            fetch(texels, shift, &i1, &j1),
-        )
+        let w00 = fetch(texels, shift, &i, &jj);
+        let w10 = if flat_s {
+            w00
+        } else {
+            fetch(texels, shift, &i1, &jj)
+        };
+        let (w01, w11) = if flat_t {
+            (w00, w10)
+        } else if flat_s {
+            let w01 = fetch(texels, shift, &i, &j1);
+            (w01, w01)
+        } else {
+            (
+                fetch(texels, shift, &i, &j1),
+                fetch(texels, shift, &i1, &j1),
+            )
+        };
+        (w00, w10, w01, w11)
     };
     for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
         let top = lerp_lanes(&unpack(&w00, c), &unpack(&w10, c), &a);
