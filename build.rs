@@ -168,6 +168,15 @@ const GL_EXTENSION_FUNCTIONS: &[(&str, &[&str])] = &[
         "GL_EXT_multi_draw_arrays",
         &["glMultiDrawArraysEXT", "glMultiDrawElementsEXT"],
     ),
+    (
+        "GL_OES_vertex_array_object",
+        &[
+            "glBindVertexArrayOES",
+            "glDeleteVertexArraysOES",
+            "glGenVertexArraysOES",
+            "glIsVertexArrayOES",
+        ],
+    ),
 ];
 
 /// EGL 1.4 functions by the version that introduced them.

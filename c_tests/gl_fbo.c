@@ -400,10 +400,16 @@ static void render_to_texture(void)
 
     glGenFramebuffersOES(1, &fb);
     glBindFramebufferOES(GL_FRAMEBUFFER_OES, fb);
+    /* OES_fbo_render_mipmap: any level up to log2 of the largest texture size; level 1
+     * has no image yet, so the framebuffer is incomplete. */
     glFramebufferTexture2DOES(GL_FRAMEBUFFER_OES, GL_COLOR_ATTACHMENT0_OES, GL_TEXTURE_2D, tex,
                               1);
-    /* The extension allows only level 0; Mesa accepts any level. */
-    CHECK_MESA_DEVIATES(glGetError() == GL_INVALID_VALUE, "Mesa accepts level 1");
+    CHECK_GL(GL_NO_ERROR);
+    CHECK(glCheckFramebufferStatusOES(GL_FRAMEBUFFER_OES) ==
+          GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_OES);
+    glFramebufferTexture2DOES(GL_FRAMEBUFFER_OES, GL_COLOR_ATTACHMENT0_OES, GL_TEXTURE_2D, tex,
+                              -1);
+    CHECK_GL(GL_INVALID_VALUE);
     glFramebufferTexture2DOES(GL_FRAMEBUFFER_OES, GL_COLOR_ATTACHMENT0_OES,
                               GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES, tex, 0);
     CHECK_GL(GL_INVALID_OPERATION); /* not a cube map */
@@ -569,6 +575,55 @@ static void sharing(void)
     CHECK_GL(GL_NO_ERROR);
 }
 
+/* OES_fbo_render_mipmap: rendering into level 1 of a texture, then sampling that level. */
+static void render_to_mipmap_level(void)
+{
+    GLuint tex, fb;
+    GLfloat v[8];
+    static const GLfloat st[8] = {0, 0, 1, 0, 0, 1, 1, 1};
+    int level;
+
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    for (level = 0; level <= 3; ++level) /* 8x8 down to 1x1, all black */
+        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, 8 >> level, 8 >> level, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, NULL);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffersOES(1, &fb);
+    glBindFramebufferOES(GL_FRAMEBUFFER_OES, fb);
+    glFramebufferTexture2DOES(GL_FRAMEBUFFER_OES, GL_COLOR_ATTACHMENT0_OES, GL_TEXTURE_2D, tex,
+                              1);
+    CHECK(glCheckFramebufferStatusOES(GL_FRAMEBUFFER_OES) == GL_FRAMEBUFFER_COMPLETE_OES);
+    glViewport(0, 0, 4, 4);
+    glClearColor(0, 1, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindFramebufferOES(GL_FRAMEBUFFER_OES, 0);
+    glViewport(0, 0, ct.width, ct.height);
+    CHECK_GL(GL_NO_ERROR);
+
+    /* A 4x4 quad samples level 1 (8x8 texels onto 4x4 pixels), a 16x16 one level 0. */
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    v[0] = -1; v[1] = -1; v[2] = -1 + 8.0f / ct.width; v[3] = -1;
+    v[4] = -1; v[5] = -1 + 8.0f / ct.height; v[6] = v[2]; v[7] = v[5];
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glTexCoordPointer(2, GL_FLOAT, 0, st);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    glDisable(GL_TEXTURE_2D);
+    CHECK_PIXEL(1, 1, 0, 255, 255, 255, 0);
+    glDeleteFramebuffersOES(1, &fb);
+    glDeleteTextures(1, &tex);
+    CHECK_GL(GL_NO_ERROR);
+}
+
 int main(void)
 {
     ct_init(32, 32);
@@ -580,5 +635,6 @@ int main(void)
     render_to_renderbuffers();
     render_to_texture();
     sharing();
+    render_to_mipmap_level();
     return ct_done();
 }

@@ -2,6 +2,7 @@
 //! both backed by one software rasterizer (`core`).
 #![allow(non_snake_case)]
 
+mod boundary;
 pub mod core;
 pub mod egl;
 pub mod gles;

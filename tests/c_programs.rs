@@ -14,7 +14,8 @@
 //!   `ct:softpipe-edges` are reported but not held to the tolerance there; their checks
 //!   still must pass.
 //! - `GLES_CM_VALGRIND=1`: runs each program (ours only) under valgrind's memcheck; any
-//!   error, or a definite leak, fails the program.
+//!   error, or a definite leak, fails the program (`c_tests/valgrind.supp` says which
+//!   reports are not leaks, and why).
 //! - `CT_FILTER=substring`: only programs whose name contains it.
 //!
 //! `dropin_binary_runs_on_mesa_and_ours` builds `c_tests/dropin/triangle.c` against the
@@ -219,6 +220,10 @@ fn build_and_run(p: &Program, imp: Implementation, out: &Path) -> Result<String,
             "--show-leak-kinds=definite",
             "--quiet",
         ])
+        .arg(format!(
+            "--suppressions={}",
+            c_tests_dir().join("valgrind.supp").display()
+        ))
         .arg(&exe);
         c
     } else {

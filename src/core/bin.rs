@@ -57,9 +57,21 @@ pub fn together(threads: usize, work: impl Fn() + Sync) {
 /// The persistent workers for `threads` threads (built on first use per count and kept, so
 /// a flush costs no thread start and workers keep their scratch memory), or `None` when
 /// threads cannot be started, and the caller runs alone.
+///
+/// The pools belong to the process that built them: a child made by `fork()` has none of
+/// its parent's threads, so waiting on them would hang it. It builds its own.
 pub fn pool(threads: usize) -> Option<Arc<rayon::ThreadPool>> {
-    static POOLS: Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>> = Mutex::new(Vec::new());
-    let mut pools = POOLS.lock().unwrap_or_else(|e| e.into_inner());
+    type Pools = Vec<(usize, Arc<rayon::ThreadPool>)>;
+    /// The process the pools belong to, its pools, and those inherited from a parent:
+    /// kept, never dropped (that would signal threads that are not here), never used.
+    static POOLS: Mutex<(u32, Pools, Pools)> = Mutex::new((0, Vec::new(), Vec::new()));
+    let mut guard = POOLS.lock().unwrap_or_else(|e| e.into_inner());
+    let (owner, pools, inherited) = &mut *guard;
+    let me = std::process::id();
+    if *owner != me {
+        inherited.append(pools);
+        *owner = me;
+    }
     if let Some((_, p)) = pools.iter().find(|(n, _)| *n == threads) {
         return Some(p.clone());
     }

@@ -770,12 +770,16 @@ fn factors(f: BlendFactor, src: &[f32; 4], dst: &[f32; 4]) -> [f32; 4] {
     }
 }
 
+/// One channel of the blend equation of source `s` and destination `d` with their
+/// factors (which MIN and MAX do not use).
 #[inline]
-fn combine(eq: BlendEquation, s: f32, d: f32) -> f32 {
+fn combine(eq: BlendEquation, s: f32, sf: f32, d: f32, df: f32) -> f32 {
     match eq {
-        BlendEquation::Add => s + d,
-        BlendEquation::Subtract => s - d,
-        BlendEquation::ReverseSubtract => d - s,
+        BlendEquation::Add => s * sf + d * df,
+        BlendEquation::Subtract => s * sf - d * df,
+        BlendEquation::ReverseSubtract => d * df - s * sf,
+        BlendEquation::Min => s.min(d),
+        BlendEquation::Max => s.max(d),
     }
 }
 
@@ -792,7 +796,7 @@ fn blend(b: &Blend, src: [f32; 4], dst: [f32; 4]) -> [f32; 4] {
         }
     } else {
         for c in 0..3 {
-            out[c] = combine(b.eq_rgb, src[c] * sf[c], dst[c] * df[c]);
+            out[c] = combine(b.eq_rgb, src[c], sf[c], dst[c], df[c]);
         }
     }
     let (sa, da) = if (b.src_alpha, b.dst_alpha) == (b.src_rgb, b.dst_rgb) {
@@ -803,7 +807,7 @@ fn blend(b: &Blend, src: [f32; 4], dst: [f32; 4]) -> [f32; 4] {
             factors(b.dst_alpha, &src, &dst)[3],
         )
     };
-    out[3] = combine(b.eq_alpha, src[3] * sa, dst[3] * da);
+    out[3] = combine(b.eq_alpha, src[3], sa, dst[3], da);
     out
 }
 

@@ -634,7 +634,9 @@ mod tests {
                 BlendEquation::Add,
                 BlendEquation::Subtract,
                 BlendEquation::ReverseSubtract,
-            ][i % 3];
+                BlendEquation::Min,
+                BlendEquation::Max,
+            ][i % 5];
             for format in [rgba, rgb565] {
                 add(
                     format!("blend {src:?} {dst:?} {eq:?} {:?}", format.color),

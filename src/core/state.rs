@@ -109,6 +109,9 @@ pub enum BlendEquation {
     Add,
     Subtract,
     ReverseSubtract,
+    /// `EXT_blend_minmax`: the smaller or larger of source and destination, factors unused.
+    Min,
+    Max,
 }
 
 /// Blending, with separate color and alpha factors and equations

@@ -248,23 +248,24 @@ impl Target {
     /// A target with undefined-but-deterministic contents (zeros; depth at its maximum).
     /// Callers check sizes first: the buffers are allocated here.
     pub fn new(width: u32, height: u32, format: TargetFormat) -> Target {
-        let n = width as usize * height as usize;
-        Target {
+        Target::try_new(width, height, format).expect("target buffers allocated")
+    }
+
+    /// [`Target::new`], or `None` when the buffers cannot be allocated (so a surface or
+    /// framebuffer too large for the machine is an error, not an abort).
+    pub fn try_new(width: u32, height: u32, format: TargetFormat) -> Option<Target> {
+        let n = (width as usize).checked_mul(height as usize)?;
+        Some(Target {
             width,
             height,
             format,
-            color: vec![format.color.encode([0.0, 0.0, 0.0, 0.0]); n],
-            depth: if format.depth.is_some() {
-                vec![format.depth.map_or(0, DepthFormat::max); n]
-            } else {
-                Vec::new()
-            },
-            stencil: if format.stencil_bits > 0 {
-                vec![0; n]
-            } else {
-                Vec::new()
-            },
-        }
+            color: try_filled(n, format.color.encode([0.0, 0.0, 0.0, 0.0]))?,
+            depth: try_filled(
+                if format.depth.is_some() { n } else { 0 },
+                format.depth.map_or(0, DepthFormat::max),
+            )?,
+            stencil: try_filled(if format.stencil_bits > 0 { n } else { 0 }, 0)?,
+        })
     }
 
     pub fn width(&self) -> u32 {
@@ -385,6 +386,14 @@ pub fn keep_mask(mask: ColorMask) -> u32 {
         }
     }
     keep
+}
+
+/// `n` copies of `value`, or `None` when they cannot be allocated.
+pub fn try_filled<T: Clone>(n: usize, value: T) -> Option<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).ok()?;
+    v.resize(n, value);
+    Some(v)
 }
 
 #[cfg(test)]

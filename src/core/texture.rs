@@ -163,8 +163,10 @@ fn unpack_5551(v: u32) -> u32 {
 
 /// Unpacks a client image laid out as `rect` (`data` holds at least `rect.len` bytes) into
 /// RGBA8 words, row 0 first.
-pub fn unpack(format: BaseFormat, ty: PixelType, rect: PixelRect, data: &[u8]) -> Vec<u32> {
-    let mut out = Vec::with_capacity(rect.width * rect.height);
+pub fn unpack(format: BaseFormat, ty: PixelType, rect: PixelRect, data: &[u8]) -> Option<Vec<u32>> {
+    let mut out = Vec::new();
+    out.try_reserve_exact(rect.width.checked_mul(rect.height)?)
+        .ok()?;
     for y in 0..rect.height {
         let row = &data[y * rect.row_stride..][..rect.width * rect.pixel_size];
         out.extend(
@@ -172,7 +174,7 @@ pub fn unpack(format: BaseFormat, ty: PixelType, rect: PixelRect, data: &[u8]) -
                 .map(|p| unpack_pixel(format, ty, p)),
         );
     }
-    out
+    Some(out)
 }
 
 /// Forces a word to what `format` keeps: components the format lacks read as GL defines
@@ -202,13 +204,18 @@ impl Image {
     /// An image of `format` filled with the expansion of zero bytes (the contents of a level
     /// specified without data are undefined; zeros keep them deterministic).
     pub fn blank(width: u32, height: u32, format: BaseFormat) -> Image {
+        Image::try_blank(width, height, format).expect("texels allocated")
+    }
+
+    /// [`Image::blank`], or `None` when the texels cannot be allocated.
+    pub fn try_blank(width: u32, height: u32, format: BaseFormat) -> Option<Image> {
         let zero = unpack_pixel(format, PixelType::UnsignedByte, &[0; 4]);
-        Image {
+        Some(Image {
             width,
             height,
             format,
-            texels: vec![zero; width as usize * height as usize],
-        }
+            texels: crate::core::target::try_filled(width as usize * height as usize, zero)?,
+        })
     }
 
     pub fn texel(&self, x: u32, y: u32) -> [u8; 4] {
@@ -340,6 +347,9 @@ pub struct Texture {
     pub generate_mipmap: bool,
     /// `OES_draw_texture`'s crop rectangle: u, v, width, height in texels.
     pub crop_rect: [i32; 4],
+    /// `APPLE_texture_max_level`: the deepest level mipmapping uses (as set: initially
+    /// 1000; levels past [`MAX_LEVEL`] do not exist anyway).
+    pub max_level: u32,
     /// Levels 0 ..= [`MAX_LEVEL`]; `None` where none has been specified. Shared with the
     /// [`Sampler`] snapshots of pending draws, so a change copies a level rather than
     /// altering what those draws read.
@@ -371,6 +381,7 @@ impl Texture {
             wrap_t: Wrap::Repeat,
             generate_mipmap: false,
             crop_rect: [0; 4],
+            max_level: 1000,
             levels: vec![None; MAX_LEVEL + 1],
             cube: None,
             version: next_generation(),
@@ -617,14 +628,14 @@ impl Texture {
     }
 
     /// Whether the texture is mipmap-complete: level 0 exists and levels 1 ..= p halve it
-    /// with the same base format.
+    /// with the same base format (p stops at `max_level`).
     pub fn mipmap_complete(&self) -> bool {
         let Some(base) = self.level(0) else {
             return false;
         };
         let (mut w, mut h) = (base.width, base.height);
         let mut l = 0;
-        while w > 1 || h > 1 {
+        while (w > 1 || h > 1) && l < self.max_level as usize {
             (w, h) = ((w / 2).max(1), (h / 2).max(1));
             l += 1;
             match self.level(l) {
@@ -661,7 +672,7 @@ impl Texture {
         let base = self.level(0).expect("cube complete");
         (1..=6u8).all(|face| {
             let (mut w, mut l) = (base.width, 0);
-            while w > 1 {
+            while w > 1 && l < self.max_level as usize {
                 w /= 2;
                 l += 1;
                 match self.face_level(face, l) {
@@ -681,7 +692,7 @@ impl Texture {
         }
         let base = self.level(0)?;
         let q = if self.min_filter.uses_mipmaps() {
-            base.width.ilog2() as usize
+            (base.width.ilog2() as usize).min(self.max_level as usize)
         } else {
             0
         };
@@ -718,7 +729,7 @@ impl Texture {
         }
         let base = self.level(0)?;
         let q = if self.min_filter.uses_mipmaps() {
-            base.width.max(base.height).ilog2() as usize
+            (base.width.max(base.height).ilog2() as usize).min(self.max_level as usize)
         } else {
             0
         };
@@ -1269,11 +1280,11 @@ mod tests {
         let rect = PixelRect::new(3, 2, 1, 4).unwrap();
         assert_eq!((rect.row_stride, rect.len), (4, 7));
         let data = [10, 20, 30, 99, 40, 50, 60];
-        let t = unpack(BaseFormat::Luminance, PixelType::UnsignedByte, rect, &data);
+        let t = unpack(BaseFormat::Luminance, PixelType::UnsignedByte, rect, &data).unwrap();
         assert_eq!(t[3].to_le_bytes(), [40, 40, 40, 255]);
         assert_eq!(t[2].to_le_bytes(), [30, 30, 30, 255]);
         let rect = PixelRect::new(1, 1, 1, 1).unwrap();
-        let a = unpack(BaseFormat::Alpha, PixelType::UnsignedByte, rect, &[77]);
+        let a = unpack(BaseFormat::Alpha, PixelType::UnsignedByte, rect, &[77]).unwrap();
         assert_eq!(a[0].to_le_bytes(), [0, 0, 0, 77]);
         let rect = PixelRect::new(1, 1, 2, 1).unwrap();
         let p = unpack(
@@ -1281,21 +1292,24 @@ mod tests {
             PixelType::UnsignedShort4444,
             rect,
             &0x8f0fu16.to_ne_bytes(),
-        );
+        )
+        .unwrap();
         assert_eq!(p[0].to_le_bytes(), [0x88, 0xff, 0x00, 0xff]);
         let p = unpack(
             BaseFormat::Rgb,
             PixelType::UnsignedShort565,
             rect,
             &0xf800u16.to_ne_bytes(),
-        );
+        )
+        .unwrap();
         assert_eq!(p[0].to_le_bytes(), [255, 0, 0, 255]);
         let p = unpack(
             BaseFormat::Rgba,
             PixelType::UnsignedShort5551,
             rect,
             &0x07c0u16.to_ne_bytes(),
-        );
+        )
+        .unwrap();
         assert_eq!(p[0].to_le_bytes(), [0, 255, 0, 0]);
     }
 
@@ -1341,7 +1355,8 @@ mod tests {
             PixelType::UnsignedByteBgra,
             rect,
             &[1, 2, 3, 4],
-        );
+        )
+        .unwrap();
         assert_eq!(p[0].to_le_bytes(), [3, 2, 1, 4]);
     }
 

@@ -192,7 +192,7 @@ pub fn create_pbuffer(dpy: usize, cfg: usize, pairs: &[(EGLint, EGLint)]) -> Egl
     let attribs = surface::parse_attribs(Kind::Pbuffer, config, pairs)?;
     let mut g = egl();
     let id = g.new_id();
-    let s = Surface::new_pbuffer(id, config, attribs);
+    let s = Surface::new_pbuffer(id, config, attribs)?;
     g.surfaces.insert(id, Arc::new(s));
     Ok(id)
 }
@@ -227,7 +227,7 @@ pub fn create_native(
         return Err(EGL_BAD_ALLOC);
     }
     let id = g.new_id();
-    let s = Surface::new_native(id, config, kind, attribs, memory, key);
+    let s = Surface::new_native(id, config, kind, attribs, memory, key)?;
     g.natives.insert(key);
     g.surfaces.insert(id, Arc::new(s));
     Ok(id)
@@ -323,6 +323,11 @@ pub fn make_current(dpy: usize, draw: usize, read: usize, ctx: usize) -> EglResu
     if !g.initialized && !release {
         return Err(EGL_NOT_INITIALIZED);
     }
+    // A thread whose locals are being destroyed (an `atexit` handler, a thread-local
+    // destructor) has already released its binding and cannot hold a new one.
+    if !release && !thread::alive() {
+        return Err(EGL_BAD_ACCESS);
+    }
     let c = if ctx == 0 {
         None
     } else {
@@ -383,7 +388,9 @@ pub fn make_current(dpy: usize, draw: usize, read: usize, ctx: usize) -> EglResu
             gl_current::lock(&n.ctx.gl).make_current(Some(draw), Some(read));
             gl_current::set(Some(n.ctx.gl.clone()));
         }
-        None => gl_current::set(None),
+        None => {
+            gl_current::set(None);
+        }
     }
     thread::replace_current(new);
     drop(g);
@@ -496,18 +503,21 @@ pub fn bind_tex_image_egl(dpy: usize, s: usize, buffer: EGLint) -> EglResult<()>
     if cur.draw.id == s || cur.read.id == s {
         cur.ctx.finish();
     }
-    bind_tex_image(&cur.ctx, &surf);
+    if !bind_tex_image(&cur.ctx, &surf) {
+        return Err(EGL_BAD_ALLOC);
+    }
     surf.update_state(|st| st.bound_to_texture = true);
     Ok(())
 }
 
 /// Takes the pbuffer's color buffer as level 0 of the texture object bound to
 /// GL_TEXTURE_2D of `ctx`'s active unit, in the surface's texture format; with
-/// EGL_MIPMAP_TEXTURE the lower levels are generated from it.
-pub fn bind_tex_image(ctx: &Context, surface: &Surface) {
+/// EGL_MIPMAP_TEXTURE the lower levels are generated from it. False when the texels cannot
+/// be allocated.
+pub fn bind_tex_image(ctx: &Context, surface: &Surface) -> bool {
     let rgba = surface.attribs.texture_format == EGL_TEXTURE_RGBA;
     let target = crate::gles::context::lock_target(surface);
-    gl_current::lock(&ctx.gl).bind_tex_image(&target, rgba, surface.attribs.mipmap_texture);
+    gl_current::lock(&ctx.gl).bind_tex_image(&target, rgba, surface.attribs.mipmap_texture)
 }
 
 /// eglReleaseTexImage: the texture loses the surface's image (its levels become

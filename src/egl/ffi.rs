@@ -4,7 +4,6 @@
 //! and record the thread's error (ARCHITECTURE decision 8).
 
 use std::ffi::{c_char, c_void, CStr};
-use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use super::display::{self as d, EglResult};
 use super::native::{EGLMemoryPixmap, EGLMemoryWindow};
@@ -17,16 +16,16 @@ use super::types::*;
 /// `fail` on error. A panic is caught here, never crossing into C, and reported as
 /// EGL_BAD_ALLOC.
 fn call<R>(fail: R, f: impl FnOnce() -> EglResult<R>) -> R {
-    match catch_unwind(AssertUnwindSafe(f)) {
-        Ok(Ok(r)) => {
+    match crate::boundary::catch(f) {
+        Some(Ok(r)) => {
             thread::set_error(EGL_SUCCESS);
             r
         }
-        Ok(Err(e)) => {
+        Some(Err(e)) => {
             thread::set_error(e);
             fail
         }
-        Err(_) => {
+        None => {
             thread::set_error(EGL_BAD_ALLOC);
             fail
         }
@@ -149,7 +148,7 @@ fn window_as_pixmap(w: EGLNativeWindowType) -> *const EGLMemoryPixmap {
 
 #[no_mangle]
 pub extern "C" fn eglGetError() -> EGLint {
-    catch_unwind(thread::take_error).unwrap_or(EGL_BAD_ALLOC)
+    crate::boundary::catch(thread::take_error).unwrap_or(EGL_BAD_ALLOC)
 }
 
 #[no_mangle]

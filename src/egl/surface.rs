@@ -316,18 +316,34 @@ fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
 }
 
 impl Surface {
-    /// A pbuffer of `attribs`' (already validated) size.
-    pub fn new_pbuffer(id: usize, config: &'static Config, attribs: CreateAttribs) -> Surface {
-        let target = Target::new(
+    /// A pbuffer of `attribs`' (already validated) size; `EGL_BAD_ALLOC` when its buffers
+    /// cannot be allocated.
+    pub fn new_pbuffer(
+        id: usize,
+        config: &'static Config,
+        attribs: CreateAttribs,
+    ) -> Result<Surface, EGLint> {
+        let target = Target::try_new(
             attribs.width as u32,
             attribs.height as u32,
             config.target_format(),
-        );
-        Surface::new(id, config, Kind::Pbuffer, attribs, target, None, 0)
+        )
+        .ok_or(EGL_BAD_ALLOC)?;
+        Ok(Surface::new(
+            id,
+            config,
+            Kind::Pbuffer,
+            attribs,
+            target,
+            None,
+            0,
+        ))
     }
 
     /// A pixmap or window surface over `memory` (validated by the caller). A pixmap's color
-    /// buffer starts with the pixmap's pixels.
+    /// buffer starts with the pixmap's pixels. Native surfaces have the pbuffers' limits:
+    /// past [`MAX_PBUFFER_SIDE`] or [`MAX_PBUFFER_PIXELS`], or when the buffers cannot be
+    /// allocated, `EGL_BAD_ALLOC`.
     pub fn new_native(
         id: usize,
         config: &'static Config,
@@ -335,19 +351,34 @@ impl Surface {
         mut attribs: CreateAttribs,
         memory: Box<dyn NativeMemory>,
         native_key: usize,
-    ) -> Surface {
+    ) -> Result<Surface, EGLint> {
         let layout = memory.layout();
+        if layout.width > MAX_PBUFFER_SIDE
+            || layout.height > MAX_PBUFFER_SIDE
+            || layout.width as i64 * layout.height as i64 > MAX_PBUFFER_PIXELS as i64
+        {
+            return Err(EGL_BAD_ALLOC);
+        }
         attribs.width = layout.width;
         attribs.height = layout.height;
-        let mut target = Target::new(
+        let mut target = Target::try_new(
             layout.width as u32,
             layout.height as u32,
             config.target_format(),
-        );
+        )
+        .ok_or(EGL_BAD_ALLOC)?;
         if kind == Kind::Pixmap {
             memory.with_bytes(&mut |b| read_from_memory(&mut target, layout, b));
         }
-        Surface::new(id, config, kind, attribs, target, Some(memory), native_key)
+        Ok(Surface::new(
+            id,
+            config,
+            kind,
+            attribs,
+            target,
+            Some(memory),
+            native_key,
+        ))
     }
 
     fn new(

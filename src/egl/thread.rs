@@ -2,6 +2,7 @@
 //! its draw and read surfaces.
 
 use std::cell::RefCell;
+use std::sync::atomic::{AtomicI32, AtomicU64, Ordering};
 use std::sync::Arc;
 
 use super::context::Context;
@@ -42,10 +43,10 @@ thread_local! {
     };
 }
 
-static NEXT_THREAD_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+static NEXT_THREAD_ID: AtomicU64 = AtomicU64::new(1);
 
 thread_local! {
-    static THREAD_ID: u64 = NEXT_THREAD_ID.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    static THREAD_ID: u64 = NEXT_THREAD_ID.fetch_add(1, Ordering::Relaxed);
 }
 
 /// A number naming the calling thread, never reused (`std::thread::current` would allocate a
@@ -54,16 +55,29 @@ pub fn id() -> u64 {
     THREAD_ID.try_with(|t| *t).unwrap_or(0)
 }
 
+/// The last error of threads whose locals are already destroyed (EGL calls from `atexit`
+/// handlers or thread-local destructors). They share this one slot: such calls come at
+/// process or thread exit, where a program checks the error right after the call.
+static LATE_ERROR: AtomicI32 = AtomicI32::new(EGL_SUCCESS);
+
+/// Whether the calling thread can still hold EGL and GL state (false once its locals are
+/// being destroyed).
+pub fn alive() -> bool {
+    STATE.try_with(|_| ()).is_ok()
+}
+
 /// Records the result of an EGL call (EGL_SUCCESS after a successful one).
 pub fn set_error(e: EGLint) {
-    let _ = STATE.try_with(|s| s.borrow_mut().error = e);
+    if STATE.try_with(|s| s.borrow_mut().error = e).is_err() {
+        LATE_ERROR.store(e, Ordering::Relaxed);
+    }
 }
 
 /// eglGetError: returns the last error and resets it to EGL_SUCCESS.
 pub fn take_error() -> EGLint {
     STATE
         .try_with(|s| std::mem::replace(&mut s.borrow_mut().error, EGL_SUCCESS))
-        .unwrap_or(EGL_SUCCESS)
+        .unwrap_or_else(|_| LATE_ERROR.swap(EGL_SUCCESS, Ordering::Relaxed))
 }
 
 pub fn api() -> EGLenum {

@@ -5,21 +5,22 @@ use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indi
 use super::buffer::lock_objects;
 use super::context::{lock_target, Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
 use super::ffi::client_bytes;
+use super::objects::Binding;
 use super::tokens::*;
 use super::tokens_ext::*;
 use super::types::*;
 
 /// One `gl*Pointer` binding: the layout as given and the client address.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct ArrayPointer {
     pub size: i32,
     pub ty: GLenum,
     pub stride: i32,
     pub ptr: usize,
     pub enabled: bool,
-    /// The buffer object bound to `GL_ARRAY_BUFFER` when the pointer was set (0: none). With
-    /// one, `ptr` is a byte offset into it.
-    pub buffer: GLuint,
+    /// The buffer object bound to `GL_ARRAY_BUFFER` when the pointer was set (none: client
+    /// memory). With one, `ptr` is a byte offset into it.
+    pub buffer: Binding,
 }
 
 impl ArrayPointer {
@@ -30,7 +31,7 @@ impl ArrayPointer {
             stride: 0,
             ptr: 0,
             enabled: false,
-            buffer: 0,
+            buffer: Binding::NONE,
         }
     }
 }
@@ -53,7 +54,7 @@ pub struct ClientArrays {
 impl ArrayPointer {
     /// Whether the pointer names any data: a client address or a buffer object.
     pub fn is_set(&self) -> bool {
-        self.ptr != 0 || self.buffer != 0
+        self.ptr != 0 || !self.buffer.is_none()
     }
 }
 
@@ -76,7 +77,7 @@ impl Default for ClientArrays {
             vertex: ArrayPointer::new(4),
             color: ArrayPointer::new(4),
             normal: ArrayPointer::new(3),
-            texcoord: [ArrayPointer::new(4); MAX_TEXTURE_UNITS],
+            texcoord: [const { ArrayPointer::new(4) }; MAX_TEXTURE_UNITS],
             point_size: ArrayPointer::new(1),
             matrix_index: ArrayPointer {
                 ty: GL_UNSIGNED_BYTE,
@@ -168,7 +169,7 @@ impl Context {
         a.ty = ty;
         a.stride = stride;
         a.ptr = ptr;
-        a.buffer = self.buffers.array;
+        a.buffer = self.buffers.array.clone();
     }
 
     pub fn client_state(&mut self, array: GLenum, on: bool) {
@@ -344,7 +345,7 @@ impl Context {
             let range = count.checked_mul(size).and_then(|len| {
                 objects
                     .buffers
-                    .get(self.buffers.element_array)?
+                    .get(&self.buffers.element_array)?
                     .range(offset, len)
             });
             match range {
@@ -391,10 +392,10 @@ fn array_view<'a>(
         .checked_mul(stride)
         .and_then(|l| l.checked_add(size * ty.size()))
         .ok_or(ArrayError::TooLarge)?;
-    let data = if a.buffer != 0 {
+    let data = if !a.buffer.is_none() {
         let buffer = objects
             .buffers
-            .get(a.buffer)
+            .get(&a.buffer)
             .ok_or(ArrayError::OutOfRange)?;
         buffer.range(a.ptr, len).ok_or(ArrayError::OutOfRange)?
     } else {

@@ -10,10 +10,9 @@
 //! A mapped buffer's storage never moves: `glBufferSubData` on a mapped buffer is
 //! `GL_INVALID_OPERATION`, and `glBufferData` unmaps before it replaces the storage.
 
-use std::collections::HashMap;
-
 use super::context::{Context, SharedObjects};
 use super::get::Value;
+use super::objects::{Binding, Names};
 use super::tokens::*;
 use super::tokens_ext::*;
 use super::types::*;
@@ -51,43 +50,18 @@ impl Buffer {
     }
 }
 
-/// The buffer names of a share group: `None` for names generated but not yet bound.
-#[derive(Debug, Default)]
-pub struct BufferNames {
-    objects: HashMap<GLuint, Option<Buffer>>,
-    next: GLuint,
-}
-
-impl BufferNames {
-    /// The buffer called `name`, if it has been bound at least once.
-    pub fn get(&self, name: GLuint) -> Option<&Buffer> {
-        self.objects.get(&name)?.as_ref()
-    }
-
-    fn get_mut(&mut self, name: GLuint) -> Option<&mut Buffer> {
-        self.objects.get_mut(&name)?.as_mut()
-    }
-
-    fn generate(&mut self) -> GLuint {
-        loop {
-            self.next = self.next.wrapping_add(1).max(1);
-            if !self.objects.contains_key(&self.next) {
-                self.objects.insert(self.next, None);
-                return self.next;
-            }
-        }
-    }
-}
+/// The buffer objects of a share group.
+pub type BufferNames = Names<Buffer>;
 
 /// A context's buffer bindings.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct BufferBindings {
-    pub array: GLuint,
-    pub element_array: GLuint,
+    pub array: Binding,
+    pub element_array: Binding,
 }
 
 impl Context {
-    fn binding(&mut self, target: GLenum) -> Option<&mut GLuint> {
+    fn binding(&mut self, target: GLenum) -> Option<&mut Binding> {
         match target {
             GL_ARRAY_BUFFER => Some(&mut self.buffers.array),
             GL_ELEMENT_ARRAY_BUFFER => Some(&mut self.buffers.element_array),
@@ -113,7 +87,8 @@ impl Context {
 
     /// `glDeleteBuffers(n, names)` (`names` holds the `n` names; a negative `n` is
     /// `GL_INVALID_VALUE`). Unknown names and 0 are ignored; a deleted buffer is unbound from
-    /// this context's targets and from every array pointer that references it.
+    /// this context's targets and from every array pointer that references it. Other
+    /// contexts that have it bound keep it (see [`super::objects`]).
     pub fn delete_buffers(&mut self, n: i32, names: &[GLuint]) {
         if n < 0 {
             return self.set_error(GL_INVALID_VALUE);
@@ -121,50 +96,44 @@ impl Context {
         let shared = self.shared.clone();
         let mut o = lock_objects(&shared);
         for &name in names {
-            if name == 0 || o.buffers.objects.remove(&name).is_none() {
+            let Some(gone) = o.buffers.delete(name) else {
                 continue;
-            }
-            if self.buffers.array == name {
-                self.buffers.array = 0;
-            }
-            if self.buffers.element_array == name {
-                self.buffers.element_array = 0;
+            };
+            for b in [&mut self.buffers.array, &mut self.buffers.element_array] {
+                if b.same_object(&gone) {
+                    *b = Binding::NONE;
+                }
             }
             self.arrays.for_each_pointer(|p| {
-                if p.buffer == name {
-                    p.buffer = 0;
+                if p.buffer.same_object(&gone) {
+                    p.buffer = Binding::NONE;
                 }
             });
         }
+        o.buffers.sweep();
     }
 
     pub fn bind_buffer(&mut self, target: GLenum, name: GLuint) {
         if self.binding(target).is_none() {
             return;
         }
-        if name != 0 {
-            let mut o = self.objects();
-            let slot = o.buffers.objects.entry(name).or_insert(None);
-            if slot.is_none() {
-                *slot = Some(Buffer::default());
-            }
-        }
-        *self.binding(target).expect("checked") = name;
+        let b = self.objects().buffers.bind(name, Buffer::default);
+        *self.binding(target).expect("checked") = b;
     }
 
     pub fn is_buffer(&mut self, name: GLuint) -> bool {
-        name != 0 && self.objects().buffers.get(name).is_some()
+        self.objects().buffers.named(name).is_some()
     }
 
-    /// Validates the target of a data call and returns the bound buffer's name, raising
+    /// Validates the target of a data call and returns the bound buffer, raising
     /// `GL_INVALID_OPERATION` when none is bound.
-    fn bound_buffer(&mut self, target: GLenum) -> Option<GLuint> {
-        let name = *self.binding(target)?;
-        if name == 0 || self.objects().buffers.get(name).is_none() {
+    fn bound_buffer(&mut self, target: GLenum) -> Option<Binding> {
+        let b = self.binding(target)?.clone();
+        if b.is_none() {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         }
-        Some(name)
+        Some(b)
     }
 
     /// `glBufferData`: `data` is `None` for a null pointer (the store is then zeroed).
@@ -179,7 +148,7 @@ impl Context {
         if size < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let Some(name) = self.bound_buffer(target) else {
+        let Some(bound) = self.bound_buffer(target) else {
             return;
         };
         let size = size as usize;
@@ -192,7 +161,7 @@ impl Context {
             None => store.resize(size, 0),
         }
         let mut o = self.objects();
-        let b = o.buffers.get_mut(name).expect("checked");
+        let b = o.buffers.get_mut(&bound).expect("bound objects live");
         b.data = store;
         b.usage = usage;
         b.mapped = false;
@@ -204,11 +173,11 @@ impl Context {
         if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        let Some(name) = self.bound_buffer(target) else {
+        let Some(bound) = self.bound_buffer(target) else {
             return;
         };
         let mut o = self.objects();
-        let b = o.buffers.get_mut(name).expect("checked");
+        let b = o.buffers.get_mut(&bound).expect("bound objects live");
         let end = (offset as usize).checked_add(data.len());
         if offset < 0 || end.is_none_or(|e| e > b.data.len()) {
             drop(o);
@@ -234,9 +203,9 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return None;
         }
-        let name = self.bound_buffer(target)?;
+        let bound = self.bound_buffer(target)?;
         let o = self.objects();
-        let b = o.buffers.get(name).expect("checked");
+        let b = o.buffers.get(&bound).expect("bound objects live");
         Some(match pname {
             GL_BUFFER_SIZE => b.data.len().min(i32::MAX as usize) as GLint,
             GL_BUFFER_USAGE => b.usage as GLint,
@@ -254,9 +223,9 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return None;
         }
-        let name = self.bound_buffer(target)?;
+        let bound = self.bound_buffer(target)?;
         let mut o = self.objects();
-        let b = o.buffers.get_mut(name).expect("checked");
+        let b = o.buffers.get_mut(&bound).expect("bound objects live");
         if b.mapped {
             drop(o);
             self.set_error(GL_INVALID_OPERATION);
@@ -272,11 +241,11 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return false;
         }
-        let Some(name) = self.bound_buffer(target) else {
+        let Some(bound) = self.bound_buffer(target) else {
             return false;
         };
         let mut o = self.objects();
-        let b = o.buffers.get_mut(name).expect("checked");
+        let b = o.buffers.get_mut(&bound).expect("bound objects live");
         if !b.mapped {
             drop(o);
             self.set_error(GL_INVALID_OPERATION);
@@ -295,9 +264,9 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return None;
         }
-        let name = self.bound_buffer(target)?;
+        let bound = self.bound_buffer(target)?;
         let mut o = self.objects();
-        let b = o.buffers.get_mut(name).expect("checked");
+        let b = o.buffers.get_mut(&bound).expect("bound objects live");
         Some(if b.mapped {
             b.data.as_mut_ptr()
         } else {
@@ -311,13 +280,15 @@ impl Context {
     pub(super) fn buffer_value(&mut self, pname: GLenum) -> Option<Value> {
         let a = &self.arrays;
         let name = match pname {
-            GL_ARRAY_BUFFER_BINDING => self.buffers.array,
-            GL_ELEMENT_ARRAY_BUFFER_BINDING => self.buffers.element_array,
-            GL_VERTEX_ARRAY_BUFFER_BINDING => a.vertex.buffer,
-            GL_NORMAL_ARRAY_BUFFER_BINDING => a.normal.buffer,
-            GL_COLOR_ARRAY_BUFFER_BINDING => a.color.buffer,
-            GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => a.texcoord[a.client_active_texture].buffer,
-            GL_POINT_SIZE_ARRAY_BUFFER_BINDING_OES => a.point_size.buffer,
+            GL_ARRAY_BUFFER_BINDING => self.buffers.array.name,
+            GL_ELEMENT_ARRAY_BUFFER_BINDING => self.buffers.element_array.name,
+            GL_VERTEX_ARRAY_BUFFER_BINDING => a.vertex.buffer.name,
+            GL_NORMAL_ARRAY_BUFFER_BINDING => a.normal.buffer.name,
+            GL_COLOR_ARRAY_BUFFER_BINDING => a.color.buffer.name,
+            GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => {
+                a.texcoord[a.client_active_texture].buffer.name
+            }
+            GL_POINT_SIZE_ARRAY_BUFFER_BINDING_OES => a.point_size.buffer.name,
             _ => return None,
         };
         Some(Value::int(name as i64))
@@ -347,19 +318,6 @@ mod tests {
         assert_eq!(b.range(2, 3), None);
         assert_eq!(b.range(5, 0), None);
         assert_eq!(b.range(usize::MAX, 2), None);
-    }
-
-    #[test]
-    fn generated_names_are_unique_and_skip_zero() {
-        let mut n = BufferNames::default();
-        let a = n.generate();
-        let b = n.generate();
-        assert!(a != 0 && b != 0 && a != b);
-        n.next = u32::MAX - 1;
-        let c = n.generate();
-        let d = n.generate();
-        assert_eq!(c, u32::MAX);
-        assert!(d != 0 && d != a && d != b);
     }
 }
 
@@ -453,7 +411,7 @@ mod context_tests {
         assert!(!c.unmap_buffer(GL_ARRAY_BUFFER));
         assert_eq!(c.take_error(), GL_INVALID_OPERATION);
         let o = lock_objects(&c.shared);
-        assert_eq!(o.buffers.get(b).unwrap().data(), &[5, 2, 7, 8]);
+        assert_eq!(o.buffers.named(b).unwrap().data(), &[5, 2, 7, 8]);
     }
 
     #[test]

@@ -17,6 +17,11 @@ fn plane_index(plane: GLenum) -> Option<usize> {
     (i < MAX_CLIP_PLANES).then_some(i)
 }
 
+/// How many values `glClipPlane*` reads for `plane` (`None`: an invalid plane).
+pub fn clip_plane_count(plane: GLenum) -> Option<usize> {
+    plane_index(plane).map(|_| 4)
+}
+
 impl Context {
     /// `glClipPlane{f,x}`: the plane given in object coordinates is stored in eye
     /// coordinates, multiplied by the inverse of the modelview matrix current now.

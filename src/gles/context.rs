@@ -182,6 +182,8 @@ pub struct Context {
     pub(super) unpack_alignment: usize,
     pub(super) hints: Hints,
     pub(super) arrays: ClientArrays,
+    /// `OES_vertex_array_object`: the objects not bound now, and which one is.
+    pub(super) vertex_arrays: super::vertex_array::VertexArrays,
     /// Current normal and texture coordinates.
     pub(super) current: CurrentValues,
     /// Alpha, stencil, blend, logic op, sample coverage and polygon offset state.
@@ -248,6 +250,7 @@ impl Context {
                 generate_mipmap: GL_DONT_CARE,
             },
             arrays: ClientArrays::default(),
+            vertex_arrays: Default::default(),
             current: CurrentValues::default(),
             fragment: FragmentState::default(),
             points_lines: PointLineState::default(),

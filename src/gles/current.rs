@@ -13,14 +13,17 @@ thread_local! {
     static CURRENT: RefCell<Option<SharedContext>> = const { RefCell::new(None) };
 }
 
-/// Makes `ctx` the calling thread's current GL context (or none).
-pub fn set(ctx: Option<SharedContext>) {
-    CURRENT.with(|c| *c.borrow_mut() = ctx);
+/// Makes `ctx` the calling thread's current GL context (or none). False when the thread's
+/// locals are already destroyed (a call from an `atexit` handler or a thread-local
+/// destructor): the thread can have no context then.
+pub fn set(ctx: Option<SharedContext>) -> bool {
+    CURRENT.try_with(|c| *c.borrow_mut() = ctx).is_ok()
 }
 
-/// The calling thread's current context, if any.
+/// The calling thread's current context, if any (none once its locals are destroyed, so a
+/// GL call at that point is a silent no-op instead of an abort).
 pub fn get() -> Option<SharedContext> {
-    CURRENT.with(|c| c.borrow().clone())
+    CURRENT.try_with(|c| c.borrow().clone()).ok().flatten()
 }
 
 /// Locks a context, recovering it if a caught panic poisoned the lock: the state is still

@@ -20,13 +20,13 @@ use super::tokens::*;
 impl Context {
     /// The crop rectangle (u, v, width, height) of the 2D texture bound to `unit`.
     fn unit_crop_rect(&self, unit: usize) -> [i32; 4] {
-        let name = self.textures.bound[unit];
-        if name == 0 {
+        let bound = &self.textures.bound[unit];
+        if bound.is_none() {
             self.textures.default.crop_rect
         } else {
             lock_objects(&self.shared)
                 .textures
-                .get(name)
+                .get(bound)
                 .map_or([0; 4], |t| t.crop_rect)
         }
     }

@@ -22,12 +22,14 @@ use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
-use crate::core::texture::{BaseFormat, MAX_TEXTURE_SIZE};
+use crate::core::target::try_filled;
+use crate::core::texture::{BaseFormat, Texture, MAX_LEVEL, MAX_TEXTURE_SIZE};
 use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
 
 use super::buffer::lock_objects;
 use super::context::{Context, SharedObjects, Surface};
 use super::get::Value;
+use super::objects::{Binding, Names};
 use super::tokens::*;
 use super::tokens_ext::*;
 use super::types::*;
@@ -83,6 +85,7 @@ pub fn renderbuffer_kind(internal_format: GLenum) -> Option<RenderbufferKind> {
     use RenderbufferKind::*;
     Some(match internal_format {
         GL_RGBA8_OES => Color(ColorFormat::Rgba8888),
+        GL_RGB8_OES => Color(ColorFormat::Rgb888),
         GL_RGB565_OES => Color(ColorFormat::Rgb565),
         GL_RGBA4_OES => Color(ColorFormat::Rgba4444),
         GL_RGB5_A1_OES => Color(ColorFormat::Rgba5551),
@@ -111,23 +114,23 @@ impl Renderbuffer {
     }
 }
 
-/// Names of one kind of object: `None` for names generated but not yet bound.
+/// A context's framebuffer object names: `None` for names generated but not yet bound.
 #[derive(Debug)]
-pub struct Names<T> {
+pub struct FramebufferNames<T> {
     objects: HashMap<GLuint, Option<T>>,
     next: GLuint,
 }
 
-impl<T> Default for Names<T> {
+impl<T> Default for FramebufferNames<T> {
     fn default() -> Self {
-        Names {
+        FramebufferNames {
             objects: HashMap::new(),
             next: 0,
         }
     }
 }
 
-impl<T: Default> Names<T> {
+impl<T: Default> FramebufferNames<T> {
     pub fn get(&self, name: GLuint) -> Option<&T> {
         self.objects.get(&name)?.as_ref()
     }
@@ -158,25 +161,27 @@ impl<T: Default> Names<T> {
     }
 }
 
+/// The renderbuffers of a share group.
 pub type RenderbufferNames = Names<Renderbuffer>;
 
-/// What an attachment point holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+/// What an attachment point holds. An attached object stays alive while attached, even
+/// when its name is deleted (the extension detaches it only from the bound framebuffer).
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub enum Attachment {
     #[default]
     None,
-    Renderbuffer(GLuint),
+    Renderbuffer(Binding),
     /// A texture level; `face` 0 for a 2D texture, 1 ..= 6 for the cube map faces
     /// POSITIVE_X .. NEGATIVE_Z.
     Texture {
-        name: GLuint,
+        object: Binding,
         level: usize,
         face: u8,
     },
 }
 
 /// A framebuffer object's attachment points: color 0, depth, stencil.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Framebuffer {
     pub points: [Attachment; 3],
 }
@@ -211,11 +216,11 @@ type Key = [(Attachment, u64); 3];
 /// A context's framebuffer objects and bindings.
 #[derive(Default)]
 pub struct FramebufferState {
-    names: Names<Framebuffer>,
+    names: FramebufferNames<Framebuffer>,
     /// `GL_FRAMEBUFFER_BINDING_OES` (0: the EGL surfaces).
     pub bound: GLuint,
     /// `GL_RENDERBUFFER_BINDING_OES`.
-    pub renderbuffer: GLuint,
+    pub renderbuffer: Binding,
     /// The assembled target of the bound framebuffer, and what it was assembled from.
     surface: Option<(Arc<FboSurface>, Key)>,
     /// Work was recorded into `surface` since it was last written back.
@@ -232,11 +237,15 @@ struct Layout {
 
 /// The size, version and what an attached image provides, or `None` when the attachment
 /// is not attachment-complete for `point`.
-fn image_info(o: &SharedObjects, a: Attachment, point: usize) -> Option<(u32, u32, u64, Provides)> {
+fn image_info(
+    o: &SharedObjects,
+    a: &Attachment,
+    point: usize,
+) -> Option<(u32, u32, u64, Provides)> {
     match a {
         Attachment::None => None,
-        Attachment::Renderbuffer(name) => {
-            let rb = o.renderbuffers.get(name)?;
+        Attachment::Renderbuffer(object) => {
+            let rb = o.renderbuffers.get(object)?;
             let p = match (rb.kind, point) {
                 (RenderbufferKind::Color(c), COLOR) => Provides::Color(c),
                 (RenderbufferKind::Depth(d), DEPTH) => Provides::Depth(d),
@@ -245,9 +254,13 @@ fn image_info(o: &SharedObjects, a: Attachment, point: usize) -> Option<(u32, u3
             };
             Some((rb.width, rb.height, rb.version, p))
         }
-        Attachment::Texture { name, level, face } => {
-            let t = o.textures.get(name)?;
-            let img = t.face_level(face, level)?;
+        Attachment::Texture {
+            object,
+            level,
+            face,
+        } => {
+            let t = o.textures.get(object)?;
+            let img = t.face_level(*face, *level)?;
             // Only RGB and RGBA textures are color-renderable here.
             let c = match (img.format, point) {
                 (BaseFormat::Rgb, COLOR) => ColorFormat::Rgb888,
@@ -275,9 +288,9 @@ fn layout(o: &SharedObjects, fb: &Framebuffer) -> Result<Layout, GLenum> {
     };
     let mut size: Option<(u32, u32)> = None;
     let mut same_size = true;
-    let mut key: Key = [(Attachment::None, 0); 3];
-    for (point, &a) in fb.points.iter().enumerate() {
-        if a == Attachment::None {
+    let mut key: Key = Default::default();
+    for (point, a) in fb.points.iter().enumerate() {
+        if *a == Attachment::None {
             continue;
         }
         let Some((w, h, version, provides)) = image_info(o, a, point) else {
@@ -295,7 +308,7 @@ fn layout(o: &SharedObjects, fb: &Framebuffer) -> Result<Layout, GLenum> {
             Provides::Depth(d) => format.depth = Some(d),
             Provides::Stencil => format.stencil_bits = 8,
         }
-        key[point] = (a, version);
+        key[point] = (a.clone(), version);
     }
     let Some((width, height)) = size else {
         return Err(GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_OES);
@@ -311,14 +324,15 @@ fn layout(o: &SharedObjects, fb: &Framebuffer) -> Result<Layout, GLenum> {
     })
 }
 
-/// A target holding the attachments' current contents.
-fn load(o: &SharedObjects, l: &Layout) -> Target {
-    let mut t = Target::new(l.width, l.height, l.format);
-    for (point, &(a, _)) in l.key.iter().enumerate() {
+/// A target holding the attachments' current contents, or `None` when it cannot be
+/// allocated.
+fn load(o: &SharedObjects, l: &Layout) -> Option<Target> {
+    let mut t = Target::try_new(l.width, l.height, l.format)?;
+    for (point, (a, _)) in l.key.iter().enumerate() {
         match a {
             Attachment::None => {}
-            Attachment::Renderbuffer(name) => {
-                let Some(rb) = o.renderbuffers.get(name) else {
+            Attachment::Renderbuffer(object) => {
+                let Some(rb) = o.renderbuffers.get(object) else {
                     continue;
                 };
                 match point {
@@ -327,8 +341,16 @@ fn load(o: &SharedObjects, l: &Layout) -> Target {
                     _ => t.stencil_mut().copy_from_slice(&rb.bytes),
                 }
             }
-            Attachment::Texture { name, level, face } => {
-                if let Some(img) = o.textures.get(name).and_then(|t| t.face_level(face, level)) {
+            Attachment::Texture {
+                object,
+                level,
+                face,
+            } => {
+                if let Some(img) = o
+                    .textures
+                    .get(object)
+                    .and_then(|t| t.face_level(*face, *level))
+                {
                     let color = l.format.color;
                     for (d, &s) in t.color_mut().iter_mut().zip(&img.texels) {
                         *d = color.quantize8(s);
@@ -337,16 +359,16 @@ fn load(o: &SharedObjects, l: &Layout) -> Target {
             }
         }
     }
-    t
+    Some(t)
 }
 
 /// Copies the target's buffers into the attachments it was assembled from.
 fn store(o: &mut SharedObjects, t: &Target, key: &Key) {
-    for (point, &(a, _)) in key.iter().enumerate() {
+    for (point, (a, _)) in key.iter().enumerate() {
         match a {
             Attachment::None => {}
-            Attachment::Renderbuffer(name) => {
-                let Some(rb) = o.renderbuffers.get_mut(name) else {
+            Attachment::Renderbuffer(object) => {
+                let Some(rb) = o.renderbuffers.get_mut(object) else {
                     continue;
                 };
                 let n = rb.width as usize * rb.height as usize;
@@ -369,9 +391,13 @@ fn store(o: &mut SharedObjects, t: &Target, key: &Key) {
                     rb.version = next_generation();
                 }
             }
-            Attachment::Texture { name, level, face } => {
-                if let Some(tex) = o.textures.get_mut(name) {
-                    tex.store_rendered_face(face, level, t.color());
+            Attachment::Texture {
+                object,
+                level,
+                face,
+            } => {
+                if let Some(tex) = o.textures.get_mut(object) {
+                    tex.store_rendered_face(*face, *level, t.color());
                 }
             }
         }
@@ -429,7 +455,7 @@ impl Context {
             .fbo
             .names
             .get(self.fbo.bound)
-            .copied()
+            .cloned()
             .unwrap_or_default();
         let shared = self.shared.clone();
         let l = {
@@ -443,7 +469,7 @@ impl Context {
                 }
             }
         };
-        if matches!(&self.fbo.surface, Some((_, k)) if *k == l.key) {
+        if matches!(&self.fbo.surface, Some((_, k)) if k == &l.key) {
             return true;
         }
         // Pending work belongs to the old attachments: land it there first.
@@ -453,6 +479,10 @@ impl Context {
         let l = layout(&o, &fb).unwrap_or(l);
         let target = load(&o, &l);
         drop(o);
+        let Some(target) = target else {
+            self.set_error(GL_OUT_OF_MEMORY);
+            return false;
+        };
         self.frame = None;
         self.fbo.surface = Some((
             Arc::new(FboSurface {
@@ -478,9 +508,9 @@ impl Context {
         store(&mut o, &super::context::lock_target(surface.as_ref()), &key);
         // Record the versions the write-back gave, so the target is not reloaded for them.
         let new_key: Key = std::array::from_fn(|p| {
-            let (a, v) = key[p];
-            let v = image_info(&o, a, p).map_or(v, |i| i.2);
-            (a, v)
+            let (a, v) = &key[p];
+            let v = image_info(&o, a, p).map_or(*v, |i| i.2);
+            (a.clone(), v)
         });
         self.fbo.surface = Some((surface, new_key));
     }
@@ -489,6 +519,27 @@ impl Context {
     fn fbo_changing(&mut self) {
         if self.fbo.bound != 0 {
             self.flush();
+        }
+    }
+
+    /// `glDiscardFramebufferEXT`: the named buffers' contents become undefined. Keeping them
+    /// is one of the allowed outcomes, and costs nothing here (there is no tile memory to
+    /// spare a write-back from); only the arguments are checked. Attachments are named as
+    /// for framebuffer objects while one is bound, else as `GL_COLOR_EXT`, `GL_DEPTH_EXT`
+    /// and `GL_STENCIL_EXT`.
+    pub fn discard_framebuffer(&mut self, target: GLenum, attachments: &[GLenum]) {
+        if !self.check_target(target) {
+            return;
+        }
+        let valid = |a: &GLenum| {
+            if self.fbo.bound == 0 {
+                matches!(*a, GL_COLOR_EXT | GL_DEPTH_EXT | GL_STENCIL_EXT)
+            } else {
+                attachment_point(*a).is_some()
+            }
+        };
+        if !attachments.iter().all(valid) {
+            self.set_error(GL_INVALID_ENUM);
         }
     }
 
@@ -548,39 +599,41 @@ impl Context {
         if target != GL_RENDERBUFFER_OES {
             return self.set_error(GL_INVALID_ENUM);
         }
-        if name != 0 {
-            lock_objects(&self.shared).renderbuffers.get_or_create(name);
-        }
-        self.fbo.renderbuffer = name;
+        self.fbo.renderbuffer = lock_objects(&self.shared)
+            .renderbuffers
+            .bind(name, Renderbuffer::default);
     }
 
     /// `glDeleteRenderbuffersOES`: a deleted renderbuffer is unbound, and detached from the
-    /// bound framebuffer object. (Other framebuffer objects keep the name, which then names
-    /// no object, so they are incomplete.)
+    /// bound framebuffer object. Other framebuffer objects keep it attached, and other
+    /// contexts keep it bound, until they let it go (see [`super::objects`]).
     pub fn delete_renderbuffers(&mut self, n: i32, names: &[GLuint]) {
         if n < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
         self.fbo_changing();
+        let shared = self.shared.clone();
         for &name in names {
-            if name == 0 || !lock_objects(&self.shared).renderbuffers.remove(name) {
+            let Some(gone) = lock_objects(&shared).renderbuffers.delete(name) else {
                 continue;
+            };
+            if self.fbo.renderbuffer.same_object(&gone) {
+                self.fbo.renderbuffer = Binding::NONE;
             }
-            if self.fbo.renderbuffer == name {
-                self.fbo.renderbuffer = 0;
-            }
-            self.detach(|a| a == Attachment::Renderbuffer(name));
+            self.detach(|a| matches!(a, Attachment::Renderbuffer(b) if b.same_object(&gone)));
         }
+        self.fbo.surface = None;
+        lock_objects(&shared).renderbuffers.sweep();
     }
 
     /// Detaches from the bound framebuffer object the attachments `f` picks.
-    fn detach(&mut self, f: impl Fn(Attachment) -> bool) {
+    fn detach(&mut self, f: impl Fn(&Attachment) -> bool) {
         if self.fbo.bound == 0 {
             return;
         }
         if let Some(fb) = self.fbo.names.get_mut(self.fbo.bound) {
             for p in &mut fb.points {
-                if f(*p) {
+                if f(p) {
                     *p = Attachment::None;
                 }
             }
@@ -588,8 +641,15 @@ impl Context {
     }
 
     /// Called when textures are deleted: they are detached from the bound framebuffer.
-    pub(super) fn textures_deleted(&mut self, names: &[GLuint]) {
-        self.detach(|a| matches!(a, Attachment::Texture { name, .. } if names.contains(&name)));
+    pub(super) fn textures_deleted(&mut self, deleted: &[Binding]) {
+        self.detach(|a| {
+            matches!(a, Attachment::Texture { object, .. }
+                if deleted.iter().any(|d| d.same_object(object)))
+        });
+        if !deleted.is_empty() {
+            // The assembled target may hold the last reference to a deleted attachment.
+            self.fbo.surface = None;
+        }
     }
 
     /// Called before a texture changes: pending rendering into it lands first.
@@ -598,7 +658,10 @@ impl Context {
     }
 
     pub fn is_renderbuffer(&self, name: GLuint) -> bool {
-        name != 0 && lock_objects(&self.shared).renderbuffers.get(name).is_some()
+        lock_objects(&self.shared)
+            .renderbuffers
+            .named(name)
+            .is_some()
     }
 
     pub fn renderbuffer_storage(
@@ -618,20 +681,27 @@ impl Context {
         if !(0..=max).contains(&w) || !(0..=max).contains(&h) {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if self.fbo.renderbuffer == 0 {
+        if self.fbo.renderbuffer.is_none() {
             return self.set_error(GL_INVALID_OPERATION);
         }
         self.fbo_changing();
         let n = w as usize * h as usize;
-        let (words, bytes) = match kind {
+        let storage = match kind {
             // Undefined contents: zeros (color), the far plane (depth), zero (stencil).
-            RenderbufferKind::Color(c) => (vec![c.encode([0.0; 4]); n], Vec::new()),
-            RenderbufferKind::Depth(d) => (vec![d.max(); n], Vec::new()),
-            RenderbufferKind::Stencil => (Vec::new(), vec![0; n]),
+            RenderbufferKind::Color(c) => {
+                try_filled(n, c.encode([0.0; 4])).map(|w| (w, Vec::new()))
+            }
+            RenderbufferKind::Depth(d) => try_filled(n, d.max()).map(|w| (w, Vec::new())),
+            RenderbufferKind::Stencil => try_filled(n, 0).map(|b| (Vec::new(), b)),
         };
-        let name = self.fbo.renderbuffer;
+        let Some((words, bytes)) = storage else {
+            return self.set_error(GL_OUT_OF_MEMORY);
+        };
         let mut o = lock_objects(&self.shared);
-        *o.renderbuffers.get_or_create(name) = Renderbuffer {
+        let Some(rb) = o.renderbuffers.get_mut(&self.fbo.renderbuffer) else {
+            return;
+        };
+        *rb = Renderbuffer {
             internal_format,
             width: w as u32,
             height: h as u32,
@@ -662,12 +732,12 @@ impl Context {
                 return None;
             }
         };
-        if self.fbo.renderbuffer == 0 {
+        if self.fbo.renderbuffer.is_none() {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         }
         let o = lock_objects(&self.shared);
-        let rb = o.renderbuffers.get(self.fbo.renderbuffer)?;
+        let rb = o.renderbuffers.get(&self.fbo.renderbuffer)?;
         Some(match (pname, index) {
             (_, Some(i)) => rb.sizes()[i] as i32,
             (GL_RENDERBUFFER_WIDTH_OES, _) => rb.width as i32,
@@ -695,15 +765,17 @@ impl Context {
         if self.fbo.bound == 0 {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        if rb != 0 && !self.is_renderbuffer(rb) {
-            return self.set_error(GL_INVALID_OPERATION);
-        }
-        self.fbo_changing();
         let a = if rb == 0 {
             Attachment::None
         } else {
-            Attachment::Renderbuffer(rb)
+            let mut o = lock_objects(&self.shared);
+            if o.renderbuffers.named(rb).is_none() {
+                drop(o);
+                return self.set_error(GL_INVALID_OPERATION);
+            }
+            Attachment::Renderbuffer(o.renderbuffers.bind(rb, Renderbuffer::default))
         };
+        self.fbo_changing();
         if let Some(fb) = self.fbo.names.get_mut(self.fbo.bound) {
             fb.points[point] = a;
         }
@@ -739,23 +811,22 @@ impl Context {
         let a = if texture == 0 {
             Attachment::None
         } else {
-            // The extension allows only level 0.
-            if level != 0 {
+            // OES_fbo_render_mipmap: any level a texture of the largest size has.
+            if !(0..=MAX_LEVEL as i32).contains(&level) {
                 return self.set_error(GL_INVALID_VALUE);
             }
-            let found = lock_objects(&self.shared)
-                .textures
-                .get(texture)
-                .map(|t| t.is_cube_map());
-            let Some(is_cube) = found else {
+            let mut o = lock_objects(&self.shared);
+            let Some(is_cube) = o.textures.named(texture).map(|t| t.is_cube_map()) else {
+                drop(o);
                 return self.set_error(GL_INVALID_OPERATION);
             };
             if is_cube != (face != 0) {
+                drop(o);
                 return self.set_error(GL_INVALID_OPERATION);
             }
             Attachment::Texture {
-                name: texture,
-                level: 0,
+                object: o.textures.bind(texture, Texture::new),
+                level: level as usize,
                 face,
             }
         };
@@ -776,7 +847,7 @@ impl Context {
             .fbo
             .names
             .get(self.fbo.bound)
-            .copied()
+            .cloned()
             .unwrap_or_default();
         match layout(&lock_objects(&self.shared), &fb) {
             Ok(_) => GL_FRAMEBUFFER_COMPLETE_OES,
@@ -801,7 +872,7 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         }
-        let a = self.fbo.names.get(self.fbo.bound)?.points[point];
+        let a = self.fbo.names.get(self.fbo.bound)?.points[point].clone();
         let v = match (pname, a) {
             (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_OES, Attachment::None) => Some(0),
             (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_OES, Attachment::Renderbuffer(_)) => {
@@ -810,11 +881,11 @@ impl Context {
             (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_OES, Attachment::Texture { .. }) => {
                 Some(GL_TEXTURE as i32)
             }
-            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_OES, Attachment::Renderbuffer(n)) => {
-                Some(n as i32)
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_OES, Attachment::Renderbuffer(b)) => {
+                Some(b.name as i32)
             }
-            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_OES, Attachment::Texture { name, .. }) => {
-                Some(name as i32)
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_OES, Attachment::Texture { object, .. }) => {
+                Some(object.name as i32)
             }
             (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_OES, Attachment::Texture { level, .. }) => {
                 Some(level as i32)
@@ -854,7 +925,7 @@ impl Context {
     pub(super) fn fbo_value(&self, pname: GLenum) -> Option<Value> {
         Some(match pname {
             GL_FRAMEBUFFER_BINDING_OES => Value::int(self.fbo.bound as i64),
-            GL_RENDERBUFFER_BINDING_OES => Value::int(self.fbo.renderbuffer as i64),
+            GL_RENDERBUFFER_BINDING_OES => Value::int(self.fbo.renderbuffer.name as i64),
             GL_MAX_RENDERBUFFER_SIZE_OES => Value::int(MAX_RENDERBUFFER_SIZE as i64),
             _ => return None,
         })

@@ -29,19 +29,19 @@ impl Default for Fog {
     }
 }
 
-/// How many values `glFog*v` reads for `pname`.
-pub fn fog_parameter_count(pname: GLenum) -> usize {
-    if pname == GL_FOG_COLOR {
-        4
-    } else {
-        1
+/// How many values `glFog*v` reads for `pname` (`None`: an invalid name).
+pub fn fog_parameter_count(pname: GLenum) -> Option<usize> {
+    match pname {
+        GL_FOG_MODE | GL_FOG_DENSITY | GL_FOG_START | GL_FOG_END => Some(1),
+        GL_FOG_COLOR => Some(4),
+        _ => None,
     }
 }
 
 impl Context {
     /// `glFog{f,x}[v]`. A vector name through a single-value call is `GL_INVALID_ENUM`.
     pub fn fog(&mut self, pname: GLenum, p: Params<'_>) {
-        if p.len() < fog_parameter_count(pname) {
+        if fog_parameter_count(pname).is_none_or(|n| p.len() < n) {
             return self.set_error(GL_INVALID_ENUM);
         }
         let f = &mut self.fog;

@@ -133,6 +133,16 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_draw_texture",
     "GL_OES_texture_cube_map",
     "GL_EXT_texture_lod_bias",
+    "GL_OES_rgb8_rgba8",
+    "GL_OES_depth24",
+    "GL_OES_stencil8",
+    "GL_EXT_discard_framebuffer",
+    "GL_EXT_multi_draw_arrays",
+    "GL_OES_fbo_render_mipmap",
+    "GL_EXT_read_format_bgra",
+    "GL_OES_vertex_array_object",
+    "GL_APPLE_texture_max_level",
+    "GL_EXT_blend_minmax",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
@@ -176,6 +186,7 @@ impl Context {
             .or_else(|| self.texture_value(pname))
             .or_else(|| self.buffer_value(pname))
             .or_else(|| self.fbo_value(pname))
+            .or_else(|| self.vertex_array_value(pname))
         {
             return Some(v);
         }
@@ -250,12 +261,14 @@ impl Context {
             GL_MATRIX_INDEX_ARRAY_SIZE_OES => Value::int(a.matrix_index.size as i64),
             GL_MATRIX_INDEX_ARRAY_TYPE_OES => Value::int(a.matrix_index.ty as i64),
             GL_MATRIX_INDEX_ARRAY_STRIDE_OES => Value::int(a.matrix_index.stride as i64),
-            GL_MATRIX_INDEX_ARRAY_BUFFER_BINDING_OES => Value::int(a.matrix_index.buffer as i64),
+            GL_MATRIX_INDEX_ARRAY_BUFFER_BINDING_OES => {
+                Value::int(a.matrix_index.buffer.name as i64)
+            }
             GL_WEIGHT_ARRAY_OES => Value::bools(&[a.weight.enabled]),
             GL_WEIGHT_ARRAY_SIZE_OES => Value::int(a.weight.size as i64),
             GL_WEIGHT_ARRAY_TYPE_OES => Value::int(a.weight.ty as i64),
             GL_WEIGHT_ARRAY_STRIDE_OES => Value::int(a.weight.stride as i64),
-            GL_WEIGHT_ARRAY_BUFFER_BINDING_OES => Value::int(a.weight.buffer as i64),
+            GL_WEIGHT_ARRAY_BUFFER_BINDING_OES => Value::int(a.weight.buffer.name as i64),
             GL_MODELVIEW_STACK_DEPTH => Value::int(self.modelview.len() as i64),
             GL_PROJECTION_STACK_DEPTH => Value::int(self.projection.len() as i64),
             GL_TEXTURE_STACK_DEPTH => Value::int(self.texture[unit].len() as i64),

@@ -99,29 +99,39 @@ impl Lighting {
     }
 }
 
-/// How many values `glLight*v` reads for `pname`.
-pub fn light_parameter_count(pname: GLenum) -> usize {
+/// How many values `glLight*v` reads for `light` and `pname` (`None`: invalid names).
+pub fn light_parameter_count(light: GLenum, pname: GLenum) -> Option<usize> {
+    light_index(light)?;
     match pname {
-        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
-        GL_SPOT_DIRECTION => 3,
-        _ => 1,
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => Some(4),
+        GL_SPOT_DIRECTION => Some(3),
+        GL_SPOT_EXPONENT
+        | GL_SPOT_CUTOFF
+        | GL_CONSTANT_ATTENUATION
+        | GL_LINEAR_ATTENUATION
+        | GL_QUADRATIC_ATTENUATION => Some(1),
+        _ => None,
     }
 }
 
-/// How many values `glLightModel*v` reads for `pname`.
-pub fn light_model_parameter_count(pname: GLenum) -> usize {
-    if pname == GL_LIGHT_MODEL_AMBIENT {
-        4
-    } else {
-        1
+/// How many values `glLightModel*v` reads for `pname` (`None`: an invalid name).
+pub fn light_model_parameter_count(pname: GLenum) -> Option<usize> {
+    match pname {
+        GL_LIGHT_MODEL_AMBIENT => Some(4),
+        GL_LIGHT_MODEL_TWO_SIDE => Some(1),
+        _ => None,
     }
 }
 
-/// How many values `glMaterial*v` reads for `pname`.
-pub fn material_parameter_count(pname: GLenum) -> usize {
+/// How many values `glMaterial*v` reads for `face` and `pname` (`None`: invalid names).
+pub fn material_parameter_count(face: GLenum, pname: GLenum) -> Option<usize> {
+    if face != GL_FRONT_AND_BACK {
+        return None;
+    }
     match pname {
-        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
-        _ => 1,
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => Some(4),
+        GL_SHININESS => Some(1),
+        _ => None,
     }
 }
 
@@ -136,7 +146,7 @@ impl Context {
         let Some(i) = light_index(light) else {
             return self.set_error(GL_INVALID_ENUM);
         };
-        if p.len() < light_parameter_count(pname) {
+        if light_parameter_count(light, pname).is_none_or(|n| p.len() < n) {
             return self.set_error(GL_INVALID_ENUM);
         }
         let mv = *self.modelview.last().expect("stack never empty");
@@ -193,7 +203,7 @@ impl Context {
 
     /// `glLightModel{f,x}[v]`: `GL_LIGHT_MODEL_TWO_SIDE` is true for any nonzero value.
     pub fn light_model(&mut self, pname: GLenum, p: Params<'_>) {
-        if p.len() < light_model_parameter_count(pname) {
+        if light_model_parameter_count(pname).is_none_or(|n| p.len() < n) {
             return self.set_error(GL_INVALID_ENUM);
         }
         match pname {
@@ -205,7 +215,7 @@ impl Context {
 
     /// `glMaterial{f,x}[v]`: ES 1.1 accepts only `GL_FRONT_AND_BACK`.
     pub fn material(&mut self, face: GLenum, pname: GLenum, p: Params<'_>) {
-        if face != GL_FRONT_AND_BACK || p.len() < material_parameter_count(pname) {
+        if material_parameter_count(face, pname).is_none_or(|n| p.len() < n) {
             return self.set_error(GL_INVALID_ENUM);
         }
         let m = &mut self.lighting.material;

@@ -14,6 +14,7 @@ pub mod framebuffer;
 pub mod get;
 pub mod lighting;
 pub mod matrix;
+pub mod objects;
 pub mod params;
 pub mod per_fragment;
 pub mod raster_state;
@@ -23,6 +24,7 @@ pub mod texture;
 pub mod tokens;
 pub mod tokens_ext;
 pub mod types;
+pub mod vertex_array;
 
 pub use context::{Context, Surface};
 

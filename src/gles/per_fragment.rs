@@ -120,6 +120,8 @@ fn blend_equation(mode: GLenum) -> Option<BlendEquation> {
         GL_FUNC_ADD_OES => BlendEquation::Add,
         GL_FUNC_SUBTRACT_OES => BlendEquation::Subtract,
         GL_FUNC_REVERSE_SUBTRACT_OES => BlendEquation::ReverseSubtract,
+        GL_MIN_EXT => BlendEquation::Min,
+        GL_MAX_EXT => BlendEquation::Max,
         _ => return None,
     })
 }

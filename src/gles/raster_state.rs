@@ -39,13 +39,12 @@ impl Default for PointLineState {
     }
 }
 
-/// How many values `glPointParameter*v` reads for `pname` (1 for unknown names, which are
-/// then rejected).
-pub fn point_parameter_count(pname: GLenum) -> usize {
-    if pname == GL_POINT_DISTANCE_ATTENUATION {
-        3
-    } else {
-        1
+/// How many values `glPointParameter*v` reads for `pname` (`None`: an invalid name).
+pub fn point_parameter_count(pname: GLenum) -> Option<usize> {
+    match pname {
+        GL_POINT_SIZE_MIN | GL_POINT_SIZE_MAX | GL_POINT_FADE_THRESHOLD_SIZE => Some(1),
+        GL_POINT_DISTANCE_ATTENUATION => Some(3),
+        _ => None,
     }
 }
 
@@ -69,7 +68,7 @@ impl Context {
     /// through them is `GL_INVALID_ENUM`. Negative sizes and thresholds are
     /// `GL_INVALID_VALUE`; the attenuation coefficients are not restricted.
     pub fn point_parameter(&mut self, pname: GLenum, p: Params<'_>) {
-        if p.len() < point_parameter_count(pname) {
+        if point_parameter_count(pname).is_none_or(|n| p.len() < n) {
             return self.set_error(GL_INVALID_ENUM);
         }
         let s = &mut self.points_lines;

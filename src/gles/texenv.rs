@@ -60,12 +60,14 @@ pub struct TexEnv {
     pub units: [TexEnvUnit; MAX_TEXTURE_UNITS],
 }
 
-/// How many values `glTexEnv*v` reads for `pname`.
-pub fn tex_env_parameter_count(pname: GLenum) -> usize {
-    if pname == GL_TEXTURE_ENV_COLOR {
-        4
-    } else {
-        1
+/// How many values `glTexEnv*v` reads for `target` and `pname` (`None`: invalid names).
+pub fn tex_env_parameter_count(target: GLenum, pname: GLenum) -> Option<usize> {
+    match (target, pname) {
+        (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => Some(4),
+        (GL_TEXTURE_ENV, p) => slot(p).map(|_| 1),
+        (GL_POINT_SPRITE_OES, GL_COORD_REPLACE_OES)
+        | (GL_TEXTURE_FILTER_CONTROL_EXT, GL_TEXTURE_LOD_BIAS_EXT) => Some(1),
+        _ => None,
     }
 }
 
@@ -115,7 +117,7 @@ impl Context {
     /// and 4 and a `GL_COORD_REPLACE_OES` other than TRUE/FALSE are `GL_INVALID_VALUE`.
     pub fn tex_env(&mut self, target: GLenum, pname: GLenum, p: Params<'_>) {
         let unit = self.active_texture;
-        if p.len() < tex_env_parameter_count(pname) {
+        if tex_env_parameter_count(target, pname).is_none_or(|n| p.len() < n) {
             return self.set_error(GL_INVALID_ENUM);
         }
         match (target, pname) {

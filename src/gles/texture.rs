@@ -11,8 +11,6 @@
 //! first completes the rendering this context has recorded, since recorded work may sample
 //! it. [`Texture::version`] changes with each change, for caches that want to notice.
 
-use std::collections::HashMap;
-
 use crate::core::fixed;
 use crate::core::texture::{
     convert_word, BaseFormat, Image, MagFilter, MinFilter, PaletteEntry, PaletteFormat, PixelRect,
@@ -23,58 +21,31 @@ use crate::core::{ColorFormat, Target};
 use super::buffer::lock_objects;
 use super::context::{lock_target, Context, MAX_TEXTURE_UNITS};
 use super::get::Value;
+use super::objects::{Binding, Names};
 use super::tokens::*;
 use super::tokens_ext::*;
 use super::types::*;
 
-/// The texture names of a share group: `None` for names generated but not yet bound.
-#[derive(Debug, Default)]
-pub struct TextureNames {
-    objects: HashMap<GLuint, Option<Texture>>,
-    next: GLuint,
-}
-
-impl TextureNames {
-    /// The texture called `name`, if it has been bound at least once.
-    pub fn get(&self, name: GLuint) -> Option<&Texture> {
-        self.objects.get(&name)?.as_ref()
-    }
-
-    pub fn get_mut(&mut self, name: GLuint) -> Option<&mut Texture> {
-        self.objects.get_mut(&name)?.as_mut()
-    }
-
-    /// The texture called `name`, created if the name is unused or only generated.
-    fn get_or_create(&mut self, name: GLuint) -> &mut Texture {
-        self.objects
-            .entry(name)
-            .or_insert(None)
-            .get_or_insert_with(Texture::new)
-    }
-
-    fn generate(&mut self) -> GLuint {
-        loop {
-            self.next = self.next.wrapping_add(1).max(1);
-            if !self.objects.contains_key(&self.next) {
-                self.objects.insert(self.next, None);
-                return self.next;
-            }
-        }
-    }
-}
+/// The texture objects of a share group.
+pub type TextureNames = Names<Texture>;
 
 /// A context's texture bindings and its default texture.
 #[derive(Debug)]
 pub struct TextureUnits {
-    /// The name bound to `GL_TEXTURE_2D` on each unit (0: the default texture).
-    pub bound: [GLuint; MAX_TEXTURE_UNITS],
+    /// The object bound to `GL_TEXTURE_2D` on each unit (none: the default texture).
+    pub bound: [Binding; MAX_TEXTURE_UNITS],
     pub default: Texture,
-    /// The name bound to `GL_TEXTURE_CUBE_MAP_OES` on each unit, and the default cube map.
-    pub bound_cube: [GLuint; MAX_TEXTURE_UNITS],
+    /// The object bound to `GL_TEXTURE_CUBE_MAP_OES` on each unit, and the default cube map.
+    pub bound_cube: [Binding; MAX_TEXTURE_UNITS],
     pub default_cube: Texture,
     /// `GL_TEXTURE_GEN_MODE_OES` of each unit: `GL_NORMAL_MAP_OES` or
     /// `GL_REFLECTION_MAP_OES` (the initial value).
     pub texgen_mode: [GLenum; MAX_TEXTURE_UNITS],
+}
+
+/// How many values `glTexGen*vOES` reads for `coord` and `pname` (`None`: invalid names).
+pub fn tex_gen_parameter_count(coord: GLenum, pname: GLenum) -> Option<usize> {
+    (coord == GL_TEXTURE_GEN_STR_OES && pname == GL_TEXTURE_GEN_MODE_OES).then_some(1)
 }
 
 impl Context {
@@ -108,9 +79,9 @@ impl Context {
 impl Default for TextureUnits {
     fn default() -> Self {
         TextureUnits {
-            bound: [0; MAX_TEXTURE_UNITS],
+            bound: [const { Binding::NONE }; MAX_TEXTURE_UNITS],
             default: Texture::new(),
-            bound_cube: [0; MAX_TEXTURE_UNITS],
+            bound_cube: [const { Binding::NONE }; MAX_TEXTURE_UNITS],
             default_cube: Texture::new_cube_map(),
             texgen_mode: [GL_REFLECTION_MAP_OES; MAX_TEXTURE_UNITS],
         }
@@ -254,9 +225,11 @@ fn copy_compatible(color: ColorFormat, format: BaseFormat) -> bool {
 }
 
 /// Reads the `w` × `h` rectangle at (x, y) of `t` as words converted to `format`; pixels
-/// outside the target (undefined in GL) read as zero.
-fn read_region(t: &Target, x: i32, y: i32, w: u32, h: u32, format: BaseFormat) -> Vec<u32> {
-    let mut out = Vec::with_capacity(w as usize * h as usize);
+/// outside the target (undefined in GL) read as zero. `None` when the words cannot be
+/// allocated.
+fn read_region(t: &Target, x: i32, y: i32, w: u32, h: u32, format: BaseFormat) -> Option<Vec<u32>> {
+    let mut out = Vec::new();
+    out.try_reserve_exact(w as usize * h as usize).ok()?;
     for row in 0..h as i64 {
         for col in 0..w as i64 {
             let (sx, sy) = (x as i64 + col, y as i64 + row);
@@ -270,7 +243,7 @@ fn read_region(t: &Target, x: i32, y: i32, w: u32, h: u32, format: BaseFormat) -
             out.push(convert_word(format, word));
         }
     }
-    out
+    Some(out)
 }
 
 /// How a `glTexParameter*` / `glGetTexParameter*` call passes its values.
@@ -294,18 +267,12 @@ impl Context {
         self.fbo_texture_changing();
     }
 
-    /// A snapshot of the texture bound to `unit` for sampling, `None` when it is incomplete
-    /// (or was deleted by another context of the share group).
+    /// A snapshot of the texture bound to `unit` for sampling, `None` when it is incomplete.
     pub(super) fn unit_sampler(
         &self,
         unit: usize,
     ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
-        let name = self.textures.bound[unit];
-        if name == 0 {
-            self.textures.default.sampler()
-        } else {
-            lock_objects(&self.shared).textures.get(name)?.sampler()
-        }
+        self.bound_sampler(&self.textures.bound[unit], &self.textures.default)
     }
 
     /// A snapshot of the cube map bound to `unit` for sampling, `None` when it is not cube
@@ -314,11 +281,18 @@ impl Context {
         &self,
         unit: usize,
     ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
-        let name = self.textures.bound_cube[unit];
-        if name == 0 {
-            self.textures.default_cube.sampler()
+        self.bound_sampler(&self.textures.bound_cube[unit], &self.textures.default_cube)
+    }
+
+    fn bound_sampler(
+        &self,
+        bound: &Binding,
+        default: &Texture,
+    ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
+        if bound.is_none() {
+            default.sampler()
         } else {
-            lock_objects(&self.shared).textures.get(name)?.sampler()
+            lock_objects(&self.shared).textures.get(bound)?.sampler()
         }
     }
 
@@ -330,41 +304,32 @@ impl Context {
 
     /// Runs `f` on the texture bound to the active unit.
     pub fn with_bound_texture<R>(&mut self, f: impl FnOnce(&mut Texture) -> R) -> R {
-        let name = self.textures.bound[self.active_texture];
-        if name == 0 {
-            f(&mut self.textures.default)
-        } else {
-            let shared = self.shared.clone();
-            let mut o = lock_objects(&shared);
-            f(o.textures.get_or_create(name))
-        }
+        self.with_target_texture(false, f)
     }
 
     /// Runs `f` on the texture bound to the active unit's cube map target (`cube`) or 2D
-    /// target.
+    /// target. A bound object lives while it is bound, even if another context of the share
+    /// group deleted its name.
     pub fn with_target_texture<R>(&mut self, cube: bool, f: impl FnOnce(&mut Texture) -> R) -> R {
-        if !cube {
-            return self.with_bound_texture(f);
-        }
-        let name = self.textures.bound_cube[self.active_texture];
-        if name == 0 {
-            f(&mut self.textures.default_cube)
+        let unit = self.active_texture;
+        let (bound, default) = if cube {
+            (
+                &self.textures.bound_cube[unit],
+                &mut self.textures.default_cube,
+            )
         } else {
-            let shared = self.shared.clone();
-            let mut o = lock_objects(&shared);
-            let t = o
-                .textures
-                .objects
-                .entry(name)
-                .or_insert(None)
-                .get_or_insert_with(Texture::new_cube_map);
-            f(t)
+            (&self.textures.bound[unit], &mut self.textures.default)
+        };
+        if bound.is_none() {
+            return f(default);
         }
+        let mut o = lock_objects(&self.shared);
+        f(o.textures.get_mut(bound).expect("bound objects live"))
     }
 
     /// The name bound to `GL_TEXTURE_2D` on texture unit `unit`.
     pub fn texture_binding(&self, unit: usize) -> GLuint {
-        self.textures.bound[unit]
+        self.textures.bound[unit].name
     }
 
     pub fn gen_textures(&mut self, n: i32) -> Vec<GLuint> {
@@ -377,6 +342,7 @@ impl Context {
     }
 
     /// `glDeleteTextures(n, names)`: names bound on any unit of this context revert to 0.
+    /// Other contexts that have a deleted texture bound keep it (see [`super::objects`]).
     pub fn delete_textures(&mut self, n: i32, names: &[GLuint]) {
         if n < 0 {
             return self.set_error(GL_INVALID_VALUE);
@@ -384,23 +350,26 @@ impl Context {
         self.texture_changing();
         let shared = self.shared.clone();
         let mut o = lock_objects(&shared);
+        let mut deleted = Vec::new();
         for &name in names {
-            if name == 0 || o.textures.objects.remove(&name).is_none() {
+            let Some(gone) = o.textures.delete(name) else {
                 continue;
-            }
+            };
             for b in self
                 .textures
                 .bound
                 .iter_mut()
                 .chain(self.textures.bound_cube.iter_mut())
             {
-                if *b == name {
-                    *b = 0;
+                if b.same_object(&gone) {
+                    *b = Binding::NONE;
                 }
             }
+            deleted.push(gone);
         }
         drop(o);
-        self.textures_deleted(names);
+        self.textures_deleted(&deleted);
+        lock_objects(&shared).textures.sweep();
     }
 
     /// `glBindTexture`: a name first bound to one target keeps that kind; binding it to
@@ -409,39 +378,31 @@ impl Context {
         let Some(cube) = object_target(target) else {
             return self.set_error(GL_INVALID_ENUM);
         };
-        if name != 0 {
-            let mut o = lock_objects(&self.shared);
-            let t = o
-                .textures
-                .objects
-                .entry(name)
-                .or_insert(None)
-                .get_or_insert_with(|| {
-                    if cube {
-                        Texture::new_cube_map()
-                    } else {
-                        Texture::new()
-                    }
-                });
-            if t.is_cube_map() != cube {
-                drop(o);
-                return self.set_error(GL_INVALID_OPERATION);
+        let mut o = lock_objects(&self.shared);
+        let b = o.textures.bind(name, || {
+            if cube {
+                Texture::new_cube_map()
+            } else {
+                Texture::new()
             }
+        });
+        if o.textures.get(&b).is_some_and(|t| t.is_cube_map() != cube) {
+            drop(o);
+            return self.set_error(GL_INVALID_OPERATION);
         }
+        drop(o);
         let unit = self.active_texture;
         if cube {
-            self.textures.bound_cube[unit] = name;
+            self.textures.bound_cube[unit] = b;
         } else {
-            self.textures.bound[unit] = name;
+            self.textures.bound[unit] = b;
         }
     }
 
     pub fn is_texture(&mut self, name: GLuint) -> bool {
-        name != 0 && lock_objects(&self.shared).textures.get(name).is_some()
+        lock_objects(&self.shared).textures.named(name).is_some()
     }
 
-    /// `glTexParameter{i,f,x}[v]`. `values` holds one value, or four for
-    /// `GL_TEXTURE_CROP_RECT_OES` (allowed only through the vector forms, `vector`).
     pub fn tex_parameter(
         &mut self,
         target: GLenum,
@@ -485,6 +446,7 @@ impl Context {
             WrapS(Wrap),
             WrapT(Wrap),
             Generate(bool),
+            MaxLevel(u32),
         }
         let wrap = |e| match e {
             GL_REPEAT => Some(Wrap::Repeat),
@@ -514,6 +476,13 @@ impl Context {
                 1 => Some(Set::Generate(true)),
                 _ => None,
             },
+            // APPLE_texture_max_level: any level number; negative ones are invalid values.
+            GL_TEXTURE_MAX_LEVEL_APPLE => {
+                if v < 0.0 || v.is_nan() {
+                    return self.set_error(GL_INVALID_VALUE);
+                }
+                Some(Set::MaxLevel(v.min(u32::MAX as f64) as u32))
+            }
             _ => None,
         };
         let Some(set) = set else {
@@ -527,6 +496,7 @@ impl Context {
                 Set::WrapS(w) => t.wrap_s = w,
                 Set::WrapT(w) => t.wrap_t = w,
                 Set::Generate(g) => t.generate_mipmap = g,
+                Set::MaxLevel(l) => t.max_level = l,
             }
             t.touch();
         })
@@ -572,6 +542,7 @@ impl Context {
                     })
                 }
                 GL_GENERATE_MIPMAP => e(GLenum::from(t.generate_mipmap)),
+                GL_TEXTURE_MAX_LEVEL_APPLE => Some(vec![t.max_level as f64]),
                 GL_TEXTURE_CROP_RECT_OES => Some(
                     t.crop_rect
                         .iter()
@@ -644,13 +615,18 @@ impl Context {
     pub fn tex_image_2d(&mut self, up: TexUpload, pixels: Option<&[u8]>) {
         let (w, h) = (up.rect.width as u32, up.rect.height as u32);
         let image = match pixels {
-            Some(p) => Image {
-                width: w,
-                height: h,
-                format: up.format,
-                texels: crate::core::texture::unpack(up.format, up.ty, up.rect, p),
-            },
-            None => Image::blank(w, h, up.format),
+            Some(p) => {
+                crate::core::texture::unpack(up.format, up.ty, up.rect, p).map(|texels| Image {
+                    width: w,
+                    height: h,
+                    format: up.format,
+                    texels,
+                })
+            }
+            None => Image::try_blank(w, h, up.format),
+        };
+        let Some(image) = image else {
+            return self.set_error(GL_OUT_OF_MEMORY);
         };
         self.texture_changing();
         self.with_face_texture(up.face, |t| t.set_face_level(up.face, up.level, image));
@@ -718,7 +694,9 @@ impl Context {
     }
 
     pub fn tex_sub_image_2d(&mut self, up: TexUpload, pixels: &[u8]) {
-        let texels = crate::core::texture::unpack(up.format, up.ty, up.rect, pixels);
+        let Some(texels) = crate::core::texture::unpack(up.format, up.ty, up.rect, pixels) else {
+            return self.set_error(GL_OUT_OF_MEMORY);
+        };
         let (w, h) = (up.rect.width as u32, up.rect.height as u32);
         if w == 0 || h == 0 {
             return;
@@ -913,6 +891,9 @@ impl Context {
             height as u32,
             format,
         );
+        let Some(texels) = texels else {
+            return self.set_error(GL_OUT_OF_MEMORY);
+        };
         let image = Image {
             width: width as u32,
             height: height as u32,
@@ -961,6 +942,9 @@ impl Context {
             height as u32,
             format,
         );
+        let Some(texels) = texels else {
+            return self.set_error(GL_OUT_OF_MEMORY);
+        };
         self.texture_changing();
         self.with_face_texture(face, |t| {
             t.write_face_region(
@@ -978,9 +962,11 @@ impl Context {
     /// The texture state `glGet*` reports.
     pub(super) fn texture_value(&mut self, pname: GLenum) -> Option<Value> {
         Some(match pname {
-            GL_TEXTURE_BINDING_2D => Value::int(self.textures.bound[self.active_texture] as i64),
+            GL_TEXTURE_BINDING_2D => {
+                Value::int(self.textures.bound[self.active_texture].name as i64)
+            }
             GL_TEXTURE_BINDING_CUBE_MAP_OES => {
-                Value::int(self.textures.bound_cube[self.active_texture] as i64)
+                Value::int(self.textures.bound_cube[self.active_texture].name as i64)
             }
             GL_MAX_TEXTURE_SIZE | GL_MAX_CUBE_MAP_TEXTURE_SIZE_OES => {
                 Value::int(MAX_TEXTURE_SIZE as i64)
@@ -995,14 +981,18 @@ impl Context {
     /// bound to the active unit as RGBA (`rgba`, for `EGL_TEXTURE_RGBA`) or RGB, replacing
     /// all levels; with `mipmap` (`EGL_MIPMAP_TEXTURE` true) the chain below is generated.
     /// The caller has completed the surface's own rendering (EGL flushes the context that
-    /// draws into it) and locked `target`. Raises no GL error.
-    pub fn bind_tex_image(&mut self, target: &Target, rgba: bool, mipmap: bool) {
+    /// draws into it) and locked `target`. Raises no GL error; false when the texels cannot
+    /// be allocated (the texture is then unchanged).
+    pub fn bind_tex_image(&mut self, target: &Target, rgba: bool, mipmap: bool) -> bool {
         let format = if rgba {
             BaseFormat::Rgba
         } else {
             BaseFormat::Rgb
         };
-        let texels = read_region(target, 0, 0, target.width(), target.height(), format);
+        let Some(texels) = read_region(target, 0, 0, target.width(), target.height(), format)
+        else {
+            return false;
+        };
         let image = Image {
             width: target.width(),
             height: target.height(),
@@ -1017,6 +1007,7 @@ impl Context {
                 t.generate_mipmaps();
             }
         });
+        true
     }
 
     /// The `eglReleaseTexImage` hook: the texture bound to the active unit loses its images.

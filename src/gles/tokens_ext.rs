@@ -165,3 +165,30 @@ pub const GL_BGRA_EXT: GLenum = 0x80E1;
 // Anisotropic texture filtering.
 pub const GL_TEXTURE_MAX_ANISOTROPY_EXT: GLenum = 0x84FE;
 pub const GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT: GLenum = 0x84FF;
+
+// Extension: GL_EXT_discard_framebuffer
+// Telling the GL which buffers' contents need not be kept.
+pub const GL_COLOR_EXT: GLenum = 0x1800;
+pub const GL_DEPTH_EXT: GLenum = 0x1801;
+pub const GL_STENCIL_EXT: GLenum = 0x1802;
+
+// Extension: GL_OES_fbo_render_mipmap
+// Framebuffer objects render into any mipmap level of a texture.
+
+// Extension: GL_EXT_read_format_bgra
+// glReadPixels into BGRA bytes and reversed 16-bit BGRA words (format GL_BGRA_EXT).
+pub const GL_UNSIGNED_SHORT_4_4_4_4_REV_EXT: GLenum = 0x8365;
+pub const GL_UNSIGNED_SHORT_1_5_5_5_REV_EXT: GLenum = 0x8366;
+
+// Extension: GL_OES_vertex_array_object
+// Named sets of vertex array state, switched by one bind.
+pub const GL_VERTEX_ARRAY_BINDING_OES: GLenum = 0x85B5;
+
+// Extension: GL_APPLE_texture_max_level
+// The deepest mipmap level a texture samples.
+pub const GL_TEXTURE_MAX_LEVEL_APPLE: GLenum = 0x813D;
+
+// Extension: GL_EXT_blend_minmax
+// Blend equations taking the smaller or larger of source and destination.
+pub const GL_MIN_EXT: GLenum = 0x8007;
+pub const GL_MAX_EXT: GLenum = 0x8008;

@@ -312,6 +312,16 @@ fn blend_lanes(b: &Blend, src: &mut Channels, dst: &mut Channels) {
                     out[j] = d[j] * df[j] - s[j] * sf[j];
                 }
             }
+            BlendEquation::Min => {
+                for j in 0..LANES {
+                    out[j] = s[j].min(d[j]);
+                }
+            }
+            BlendEquation::Max => {
+                for j in 0..LANES {
+                    out[j] = s[j].max(d[j]);
+                }
+            }
         }
     }
     *dst = out;

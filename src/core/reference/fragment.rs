@@ -127,6 +127,8 @@ pub fn process(
                 BlendEquation::Add => s + d,
                 BlendEquation::Subtract => s - d,
                 BlendEquation::ReverseSubtract => d - s,
+                BlendEquation::Min => c[i].min(dst[i]),
+                BlendEquation::Max => c[i].max(dst[i]),
             }
             .clamp(0.0, 1.0);
         }

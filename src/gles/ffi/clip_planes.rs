@@ -3,26 +3,32 @@
 use crate::core::fixed::{from_f32, to_f32 as fx};
 use crate::gles::types::*;
 
-use super::{read_array, with_context, write_values};
+use crate::gles::clip_planes::clip_plane_count;
+
+use super::{valid_params, with_context, write_values};
 
 /// # Safety
 /// A non-null `equation` must point to four values.
 #[no_mangle]
 pub unsafe extern "C" fn glClipPlanef(plane: GLenum, equation: *const GLfloat) {
-    // SAFETY: the caller passes four values.
-    if let Some(eq) = unsafe { read_array::<GLfloat, 4>(equation) } {
-        with_context((), |c| c.clip_plane(plane, eq))
-    }
+    with_context((), |c| {
+        // SAFETY: the caller passes four values.
+        if let Some(eq) = unsafe { valid_params(c, clip_plane_count(plane), equation) } {
+            c.clip_plane(plane, [eq[0], eq[1], eq[2], eq[3]])
+        }
+    })
 }
 
 /// # Safety
 /// A non-null `equation` must point to four values.
 #[no_mangle]
 pub unsafe extern "C" fn glClipPlanex(plane: GLenum, equation: *const GLfixed) {
-    // SAFETY: the caller passes four values.
-    if let Some(eq) = unsafe { read_array::<GLfixed, 4>(equation) } {
-        with_context((), |c| c.clip_plane(plane, eq.map(fx)))
-    }
+    with_context((), |c| {
+        // SAFETY: the caller passes four values.
+        if let Some(eq) = unsafe { valid_params(c, clip_plane_count(plane), equation) } {
+            c.clip_plane(plane, [eq[0], eq[1], eq[2], eq[3]].map(fx))
+        }
+    })
 }
 
 /// # Safety

@@ -3,7 +3,7 @@
 use crate::gles::types::*;
 
 use super::texture::names;
-use super::{with_context, write_values};
+use super::{read_slice, with_context, write_values};
 
 /// # Safety
 /// A non-null `framebuffers` must have room for `n` names.
@@ -145,4 +145,24 @@ pub unsafe extern "C" fn glGetFramebufferAttachmentParameterivOES(
 #[no_mangle]
 pub extern "C" fn glGenerateMipmapOES(target: GLenum) {
     with_context((), |c| c.generate_mipmap(target))
+}
+
+/// `EXT_discard_framebuffer`.
+///
+/// # Safety
+/// A non-null `attachments` must point to `num_attachments` values.
+#[no_mangle]
+pub unsafe extern "C" fn glDiscardFramebufferEXT(
+    target: GLenum,
+    num_attachments: GLsizei,
+    attachments: *const GLenum,
+) {
+    with_context((), |c| {
+        if num_attachments < 0 {
+            return c.set_error(crate::gles::tokens::GL_INVALID_VALUE);
+        }
+        // SAFETY: the application passes `num_attachments` values.
+        let list = unsafe { read_slice(attachments, num_attachments as usize) };
+        c.discard_framebuffer(target, &list.unwrap_or_default())
+    })
 }

@@ -4,7 +4,7 @@ use crate::gles::fog::fog_parameter_count;
 use crate::gles::params::Params;
 use crate::gles::types::*;
 
-use super::{read_slice, with_context};
+use super::{valid_params, with_context};
 
 #[no_mangle]
 pub extern "C" fn glFogf(pname: GLenum, param: GLfloat) {
@@ -23,7 +23,7 @@ pub extern "C" fn glFogx(pname: GLenum, param: GLfixed) {
 pub unsafe extern "C" fn glFogfv(pname: GLenum, params: *const GLfloat) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, fog_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, fog_parameter_count(pname), params) } {
             c.fog(pname, Params::Float(&v))
         }
     })
@@ -35,7 +35,7 @@ pub unsafe extern "C" fn glFogfv(pname: GLenum, params: *const GLfloat) {
 pub unsafe extern "C" fn glFogxv(pname: GLenum, params: *const GLfixed) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, fog_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, fog_parameter_count(pname), params) } {
             c.fog(pname, Params::Fixed(&v))
         }
     })

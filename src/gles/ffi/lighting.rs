@@ -6,7 +6,7 @@ use crate::gles::lighting::{
 use crate::gles::params::{fixed_reply, Params};
 use crate::gles::types::*;
 
-use super::{read_slice, with_context, write_values};
+use super::{valid_params, with_context, write_values};
 
 #[no_mangle]
 pub extern "C" fn glLightf(light: GLenum, pname: GLenum, param: GLfloat) {
@@ -24,7 +24,7 @@ pub extern "C" fn glLightx(light: GLenum, pname: GLenum, param: GLfixed) {
 pub unsafe extern "C" fn glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, light_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, light_parameter_count(light, pname), params) } {
             c.light(light, pname, Params::Float(&v))
         }
     })
@@ -36,7 +36,7 @@ pub unsafe extern "C" fn glLightfv(light: GLenum, pname: GLenum, params: *const 
 pub unsafe extern "C" fn glLightxv(light: GLenum, pname: GLenum, params: *const GLfixed) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, light_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, light_parameter_count(light, pname), params) } {
             c.light(light, pname, Params::Fixed(&v))
         }
     })
@@ -82,7 +82,7 @@ pub extern "C" fn glLightModelx(pname: GLenum, param: GLfixed) {
 pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, light_model_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, light_model_parameter_count(pname), params) } {
             c.light_model(pname, Params::Float(&v))
         }
     })
@@ -94,7 +94,7 @@ pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
 pub unsafe extern "C" fn glLightModelxv(pname: GLenum, params: *const GLfixed) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, light_model_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, light_model_parameter_count(pname), params) } {
             c.light_model(pname, Params::Fixed(&v))
         }
     })
@@ -116,7 +116,7 @@ pub extern "C" fn glMaterialx(face: GLenum, pname: GLenum, param: GLfixed) {
 pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, material_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, material_parameter_count(face, pname), params) } {
             c.material(face, pname, Params::Float(&v))
         }
     })
@@ -128,7 +128,7 @@ pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *cons
 pub unsafe extern "C" fn glMaterialxv(face: GLenum, pname: GLenum, params: *const GLfixed) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, material_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, material_parameter_count(face, pname), params) } {
             c.material(face, pname, Params::Fixed(&v))
         }
     })

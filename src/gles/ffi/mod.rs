@@ -3,7 +3,6 @@
 //! (ARCHITECTURE decision 8). One file per state area.
 
 use std::ffi::c_void;
-use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use super::context::Context;
 use super::current;
@@ -48,15 +47,16 @@ pub use texgen::*;
 pub use texture::*;
 
 /// Runs `f` on the calling thread's current context. Without one the call does nothing and
-/// returns `default`. A panic inside is caught here, never crossing into C, and reported as
+/// returns `default` (so also once the thread's locals are destroyed, as in an `atexit`
+/// handler). A panic inside is caught here, never crossing into C, and reported as
 /// `GL_OUT_OF_MEMORY` (the only error GL lets an implementation raise at any time).
 pub(crate) fn with_context<R>(default: R, f: impl FnOnce(&mut Context) -> R) -> R {
     let Some(ctx) = current::get() else {
         return default;
     };
-    match catch_unwind(AssertUnwindSafe(|| f(&mut current::lock(&ctx)))) {
-        Ok(r) => r,
-        Err(_) => {
+    match crate::boundary::catch(|| f(&mut current::lock(&ctx))) {
+        Some(r) => r,
+        None => {
             current::lock(&ctx).set_error(GL_OUT_OF_MEMORY);
             default
         }
@@ -86,6 +86,26 @@ pub(crate) unsafe fn read_array<T: Copy, const N: usize>(p: *const T) -> Option<
     }
     // SAFETY: non-null and, by the caller's contract, N readable values.
     Some(unsafe { std::ptr::read_unaligned(p as *const [T; N]) })
+}
+
+/// The values of a vector setter, read only after its names were validated, so that a bad
+/// name is reported even with a bad pointer: `count` is `None` for invalid names (then
+/// `GL_INVALID_ENUM`, and the pointer is never read). A null pointer gives `None` (nothing
+/// to set).
+///
+/// # Safety
+/// A non-null `p` must point to at least `count` readable values.
+pub(crate) unsafe fn valid_params<T: Copy>(
+    c: &mut Context,
+    count: Option<usize>,
+    p: *const T,
+) -> Option<Vec<T>> {
+    let Some(n) = count else {
+        c.set_error(super::tokens::GL_INVALID_ENUM);
+        return None;
+    };
+    // SAFETY: forwarded to the caller's contract.
+    unsafe { read_slice(p, n) }
 }
 
 /// Reads `n` values from a C array argument, or `None` for a null pointer.

@@ -5,7 +5,7 @@ use crate::gles::params::Params;
 use crate::gles::raster_state::point_parameter_count;
 use crate::gles::types::*;
 
-use super::{read_slice, with_context};
+use super::{valid_params, with_context};
 
 #[no_mangle]
 pub extern "C" fn glLineWidth(width: GLfloat) {
@@ -43,7 +43,7 @@ pub extern "C" fn glPointParameterx(pname: GLenum, param: GLfixed) {
 pub unsafe extern "C" fn glPointParameterfv(pname: GLenum, params: *const GLfloat) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, point_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, point_parameter_count(pname), params) } {
             c.point_parameter(pname, Params::Float(&v))
         }
     })
@@ -55,7 +55,7 @@ pub unsafe extern "C" fn glPointParameterfv(pname: GLenum, params: *const GLfloa
 pub unsafe extern "C" fn glPointParameterxv(pname: GLenum, params: *const GLfixed) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, point_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, point_parameter_count(pname), params) } {
             c.point_parameter(pname, Params::Fixed(&v))
         }
     })

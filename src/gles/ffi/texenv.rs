@@ -4,7 +4,7 @@ use crate::gles::params::{fixed_reply, int_reply, Params};
 use crate::gles::texenv::tex_env_parameter_count;
 use crate::gles::types::*;
 
-use super::{read_slice, with_context, write_values};
+use super::{valid_params, with_context, write_values};
 
 #[no_mangle]
 pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
@@ -28,7 +28,8 @@ pub extern "C" fn glTexEnvx(target: GLenum, pname: GLenum, param: GLfixed) {
 pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, tex_env_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, tex_env_parameter_count(target, pname), params) }
+        {
             c.tex_env(target, pname, Params::Float(&v))
         }
     })
@@ -40,7 +41,8 @@ pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *cons
 pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, tex_env_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, tex_env_parameter_count(target, pname), params) }
+        {
             c.tex_env(target, pname, Params::Int(&v))
         }
     })
@@ -52,7 +54,8 @@ pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *cons
 pub unsafe extern "C" fn glTexEnvxv(target: GLenum, pname: GLenum, params: *const GLfixed) {
     with_context((), |c| {
         // SAFETY: the caller passes pname's values.
-        if let Some(v) = unsafe { read_slice(params, tex_env_parameter_count(pname)) } {
+        if let Some(v) = unsafe { valid_params(c, tex_env_parameter_count(target, pname), params) }
+        {
             c.tex_env(target, pname, Params::Fixed(&v))
         }
     })

@@ -5,7 +5,9 @@
 
 use crate::gles::types::*;
 
-use super::{read_array, with_context, write_values};
+use crate::gles::texture::tex_gen_parameter_count;
+
+use super::{valid_params, with_context, write_values};
 
 #[no_mangle]
 pub extern "C" fn glTexGenfOES(coord: GLenum, pname: GLenum, param: GLfloat) {
@@ -26,30 +28,36 @@ pub extern "C" fn glTexGenxOES(coord: GLenum, pname: GLenum, param: GLfixed) {
 /// A non-null `params` must point to one value.
 #[no_mangle]
 pub unsafe extern "C" fn glTexGenfvOES(coord: GLenum, pname: GLenum, params: *const GLfloat) {
-    // SAFETY: the application passes one value.
-    if let Some([v]) = unsafe { read_array::<_, 1>(params) } {
-        glTexGenfOES(coord, pname, v)
-    }
+    with_context((), |c| {
+        // SAFETY: the application passes one value.
+        if let Some(v) = unsafe { valid_params(c, tex_gen_parameter_count(coord, pname), params) } {
+            c.tex_gen(coord, pname, v[0] as f64)
+        }
+    })
 }
 
 /// # Safety
 /// A non-null `params` must point to one value.
 #[no_mangle]
 pub unsafe extern "C" fn glTexGenivOES(coord: GLenum, pname: GLenum, params: *const GLint) {
-    // SAFETY: the application passes one value.
-    if let Some([v]) = unsafe { read_array::<_, 1>(params) } {
-        glTexGeniOES(coord, pname, v)
-    }
+    with_context((), |c| {
+        // SAFETY: the application passes one value.
+        if let Some(v) = unsafe { valid_params(c, tex_gen_parameter_count(coord, pname), params) } {
+            c.tex_gen(coord, pname, v[0] as f64)
+        }
+    })
 }
 
 /// # Safety
 /// A non-null `params` must point to one value.
 #[no_mangle]
 pub unsafe extern "C" fn glTexGenxvOES(coord: GLenum, pname: GLenum, params: *const GLfixed) {
-    // SAFETY: the application passes one value.
-    if let Some([v]) = unsafe { read_array::<_, 1>(params) } {
-        glTexGenxOES(coord, pname, v)
-    }
+    with_context((), |c| {
+        // SAFETY: the application passes one value.
+        if let Some(v) = unsafe { valid_params(c, tex_gen_parameter_count(coord, pname), params) } {
+            c.tex_gen(coord, pname, v[0] as f64)
+        }
+    })
 }
 
 /// # Safety
