@@ -102,19 +102,13 @@ impl Context {
         if w < 0 || h < 0 {
             return Err(GL_INVALID_VALUE);
         }
-        // EXT_read_format_bgra adds its three BGRA layouts to RGBA bytes, always readable.
-        let reversed = matches!(
-            ty,
-            GL_UNSIGNED_SHORT_4_4_4_4_REV_EXT | GL_UNSIGNED_SHORT_1_5_5_5_REV_EXT
-        );
-        let allowed = if format == GL_BGRA_EXT {
-            ty == GL_UNSIGNED_BYTE || reversed
-        } else {
-            !reversed
-                && ((format, ty) == (GL_RGBA, GL_UNSIGNED_BYTE)
-                    || (format, ty) == self.implementation_read_format())
-        };
-        if !allowed {
+        // EXT_read_format_bgra: BGRA bytes are readable always, as RGBA bytes are. Its
+        // reversed 16-bit types are valid names, readable only as an implementation read
+        // format, which none of ours is (Mesa reads them the same way).
+        if (format, ty) != (GL_RGBA, GL_UNSIGNED_BYTE)
+            && (format, ty) != (GL_BGRA_EXT, GL_UNSIGNED_BYTE)
+            && (format, ty) != self.implementation_read_format()
+        {
             return Err(GL_INVALID_OPERATION);
         }
         let bpp = match (format, ty) {
@@ -185,18 +179,6 @@ fn read_rect(t: &Target, x: i32, y: i32, w: i32, h: i32, layout: PixelLayout, ou
                 (GL_RGBA, GL_UNSIGNED_BYTE) => dst.copy_from_slice(&px),
                 (GL_BGRA_EXT, GL_UNSIGNED_BYTE) => {
                     dst.copy_from_slice(&[px[2], px[1], px[0], px[3]])
-                }
-                (GL_BGRA_EXT, GL_UNSIGNED_SHORT_4_4_4_4_REV_EXT) => {
-                    // REV: the first component (blue) in the lowest bits.
-                    let q = |v: u8| (v as u32 * 15 + 127) / 255;
-                    let v = q(px[3]) << 12 | q(px[0]) << 8 | q(px[1]) << 4 | q(px[2]);
-                    dst.copy_from_slice(&(v as u16).to_ne_bytes());
-                }
-                (GL_BGRA_EXT, _) => {
-                    let q = |v: u8| (v as u32 * 31 + 127) / 255;
-                    let a = (px[3] >= 128) as u32;
-                    let v = a << 15 | q(px[0]) << 10 | q(px[1]) << 5 | q(px[2]);
-                    dst.copy_from_slice(&(v as u16).to_ne_bytes());
                 }
                 (GL_RGB, GL_UNSIGNED_BYTE) => dst.copy_from_slice(&px[..3]),
                 (GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4) => {
