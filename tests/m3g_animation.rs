@@ -1255,7 +1255,7 @@ fn corpus_animated_files_match_the_reference_at_three_times() {
             let img = image::open(&reference).expect("reference image");
             let img = img.to_rgb8();
             let (w, h) = img.dimensions();
-            let ours = loader::render_roots(&roots, t, w, h, false)
+            let ours = loader::render_roots(&roots, t, w, h, false, loader::RenderTarget::Graphics)
                 .unwrap_or_else(|e| panic!("{file} t={t}: render failed: {e}"));
             let (mut gt1, mut gt8, mut sum, mut max) = (0usize, 0usize, 0u64, 0u8);
             for (a, b) in ours.chunks(3).zip(img.as_raw().chunks(3)) {

@@ -4,7 +4,9 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use GLES_CM::m3g::loader::{adler32, render_roots, Loaded, UserParameters, FILE_IDENTIFIER};
+use GLES_CM::m3g::loader::{
+    adler32, render_roots, Loaded, RenderTarget, UserParameters, FILE_IDENTIFIER,
+};
 use GLES_CM::m3g::writer::save;
 use GLES_CM::m3g::*;
 
@@ -1023,7 +1025,15 @@ fn corpus_renders_compare_with_the_reference_images() {
         let load_ms = start.elapsed().as_secs_f64() * 1000.0;
         let mut images = Vec::new();
         for (clamp_after_lighting, mode) in [(false, "late"), (true, "spec")] {
-            let img = render_roots(&l.roots, t, 240, 320, clamp_after_lighting).unwrap();
+            let img = render_roots(
+                &l.roots,
+                t,
+                240,
+                320,
+                clamp_after_lighting,
+                RenderTarget::Graphics,
+            )
+            .unwrap();
             let d = compare(&img, &refs.join(&n));
             let pass = d.over8 <= 768 && d.mean <= 1.0;
             eprintln!(

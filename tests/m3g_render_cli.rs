@@ -200,3 +200,73 @@ fn every_corpus_file_renders() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A World whose Background shows a 2 × 1 image of `format` (red, then green, as phone
+/// content made for an RGB `Graphics` target has it), written as a `.m3g` file.
+fn background_world_file(dir: &Path, format: i32) -> PathBuf {
+    use GLES_CM::m3g::{Background, Camera, GroupExt, Image2D, Object3DExt, World};
+    let bpp = if format == Image2D::RGBA { 4 } else { 3 };
+    let mut pixels = vec![0u8; 2 * bpp];
+    pixels[0] = 255; // red
+    pixels[bpp + 1] = 255; // green
+    if bpp == 4 {
+        pixels[3] = 255;
+        pixels[7] = 255;
+    }
+    let image = Image2D::with_pixels(format, 2, 1, &pixels).unwrap();
+    let bg = Background::new();
+    bg.set_image(Some(&image)).unwrap();
+    bg.set_crop(0, 0, 2, 1).unwrap();
+    let world = World::new();
+    let camera = Camera::new();
+    world.add_child(&camera).unwrap();
+    world.set_active_camera(&camera);
+    world.set_background(Some(&bg));
+    let bytes = GLES_CM::m3g::writer::save(&[world.as_object3d()], false).unwrap();
+    let path = dir.join(format!("background-{format}.m3g"));
+    std::fs::write(&path, bytes).unwrap();
+    path
+}
+
+#[test]
+fn rgb_backgrounds_render_on_the_default_graphics_target() {
+    let dir = tmp("rgb-background");
+    let rgb_file = background_world_file(&dir, GLES_CM::m3g::Image2D::RGB);
+    let out = dir.join("rgb.png");
+    let o = run(&[&rgb_file, &"--size", &"4x2", &"--out", &out]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = rgb(&out);
+    // The 2 × 1 image stretched over 4 × 2 pixels: red on the left, green on the right.
+    assert_eq!(img.get_pixel(0, 0).0, [255, 0, 0]);
+    assert_eq!(img.get_pixel(3, 1).0, [0, 255, 0]);
+
+    // An RGBA Image2D target wants RGBA backgrounds: the error names both formats.
+    let o = run(&[&rgb_file, &"--target", &"rgba", &"--out", &out]);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("background image format RGB differs from the target's RGBA"),
+        "{err}"
+    );
+    let rgba_file = background_world_file(&dir, GLES_CM::m3g::Image2D::RGBA);
+    let o = run(&[
+        &rgba_file,
+        &"--target",
+        &"rgba",
+        &"--size",
+        &"4x2",
+        &"--out",
+        &out,
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(rgb(&out).get_pixel(0, 0).0, [255, 0, 0]);
+    let o = run(&[&rgba_file, &"--out", &out]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("background image format RGBA differs from the target's RGB"),
+        "{err}"
+    );
+    let o = run(&[&rgba_file, &"--target", &"bgr"]);
+    assert_eq!(o.status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).ok();
+}

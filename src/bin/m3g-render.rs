@@ -19,11 +19,11 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use GLES_CM::m3g::loader::{render_roots, Loader};
+use GLES_CM::m3g::loader::{render_roots, Loader, RenderTarget};
 use GLES_CM::m3g::{Camera, NodeExt, Object3D, Object3DExt, World};
 
 const USAGE: &str = "\
-usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera USER_ID] [--late-clamp] [--out PATH]
+usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera USER_ID] [--target rgb|rgba] [--late-clamp] [--out PATH]
   FILE           a .m3g file (its first World is rendered)
   --time MS      world time of the (first) frame, default 0
   --frames N     render N frames (1..=100000) at MS, MS+step, ...; writes PATH-000.png, ...
@@ -31,6 +31,8 @@ usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera
   --step MS      time between frames (with --frames), default 40
   --size WxH     image size, 1..=2048 each, default 240x320
   --camera ID    render through the Camera with user ID ID instead of the active camera
+  --target KIND  rgb (default): a phone's Graphics target, so background images must be RGB;
+                 rgba: an RGBA Image2D target, for RGBA background images
   --late-clamp   clamp lit colors after texturing, as Mesa does (the corpus references)
                  instead of right after lighting, as the specification does
   --out PATH     output PNG, default FILE with the extension .png";
@@ -44,6 +46,7 @@ struct Args {
     step: i32,
     size: (u32, u32),
     camera: Option<i32>,
+    target: RenderTarget,
     late_clamp: bool,
     out: Option<PathBuf>,
 }
@@ -61,6 +64,7 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
     let mut step = None;
     let mut size = (240, 320);
     let mut camera = None;
+    let mut target = RenderTarget::Graphics;
     let mut late_clamp = false;
     let mut out = None;
     while let Some(a) = it.next() {
@@ -100,6 +104,13 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
                     "an integer user ID",
                 )?)
             }
+            "--target" => {
+                target = match value("--target")?.as_str() {
+                    "rgb" => RenderTarget::Graphics,
+                    "rgba" => RenderTarget::RgbaImage,
+                    v => return Err(format!("--target: {v:?} is not rgb or rgba")),
+                }
+            }
             "--late-clamp" => late_clamp = true,
             "--out" => out = Some(PathBuf::from(value("--out")?)),
             "-h" | "--help" => return Err(String::new()),
@@ -133,6 +144,7 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
         step,
         size,
         camera,
+        target,
         late_clamp,
         out,
     })
@@ -405,8 +417,15 @@ fn run() -> Result<String, Failure> {
         world.set_active_camera(&camera);
     }
     let render = |t: i32| {
-        render_roots(&loaded.roots, t, a.size.0, a.size.1, !a.late_clamp)
-            .map_err(|e| format!("{} at {t} ms: {e}", a.file.display()))
+        render_roots(
+            &loaded.roots,
+            t,
+            a.size.0,
+            a.size.1,
+            !a.late_clamp,
+            a.target,
+        )
+        .map_err(|e| format!("{} at {t} ms: {e}", a.file.display()))
     };
     let out = a
         .out

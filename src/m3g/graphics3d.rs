@@ -51,6 +51,8 @@ struct Bound {
     target: Target,
     frame: Frame,
     image: Option<Image2D>,
+    /// The `Image2D` format the target stands for: a background image must have it.
+    format: i32,
     depth: bool,
     hints: i32,
 }
@@ -255,6 +257,22 @@ impl Graphics3D {
     }
 
     fn bind(&mut self, target: Target, image: Option<Image2D>, depth: bool, hints: i32) {
+        let format = match (&image, target.format().color) {
+            (Some(i), _) => i.format(),
+            (None, ColorFormat::Rgba8888) => Image2D::RGBA,
+            (None, _) => Image2D::RGB,
+        };
+        self.bind_as(target, image, format, depth, hints);
+    }
+
+    fn bind_as(
+        &mut self,
+        target: Target,
+        image: Option<Image2D>,
+        format: i32,
+        depth: bool,
+        hints: i32,
+    ) {
         let (w, h) = (target.width(), target.height());
         self.viewport = [0, 0, w as i32, h as i32];
         self.bound = Some(Bound {
@@ -262,6 +280,7 @@ impl Graphics3D {
             depth: depth && target.format().depth.is_some(),
             target,
             image,
+            format,
             hints,
         });
     }
@@ -317,6 +336,21 @@ impl Graphics3D {
     pub fn bind_target(&mut self, target: Target, depth_buffer: bool, hints: i32) -> Result<()> {
         self.check_bind(target.width(), target.height(), hints)?;
         self.bind(target, None, depth_buffer, hints);
+        Ok(())
+    }
+
+    /// `bindTarget(graphics, depthBuffer, hints)` for a MIDP `Graphics` target, whose format
+    /// is always RGB (M3G 1.1, `Graphics3D`): `target` is the buffer that renders it (RGBA
+    /// as a phone's back buffer is, or RGB), and a background image must be RGB, as content
+    /// made for phones has it. Otherwise as [`bind_target`](Self::bind_target).
+    pub fn bind_graphics_target(
+        &mut self,
+        target: Target,
+        depth_buffer: bool,
+        hints: i32,
+    ) -> Result<()> {
+        self.check_bind(target.width(), target.height(), hints)?;
+        self.bind_as(target, None, Image2D::RGB, depth_buffer, hints);
         Ok(())
     }
 
@@ -498,15 +532,17 @@ impl Graphics3D {
         Rect::new(x, th - y - h, w, h).intersect(b.target.bounds())
     }
 
-    fn bg_format_ok(&self, bg: Option<&Background>) -> bool {
-        let b = self.bound.as_ref().unwrap();
-        let want = if b.target.format().color == ColorFormat::Rgba8888 {
-            Image2D::RGBA
-        } else {
-            Image2D::RGB
-        };
-        bg.and_then(|bg| bg.image())
-            .is_none_or(|i| i.format() == want)
+    /// Checks that `bg`'s image (if any) has the target's format; the error names both.
+    fn check_bg_format(&self, bg: Option<&Background>) -> std::result::Result<(), String> {
+        let want = self.bound.as_ref().unwrap().format;
+        match bg.and_then(|bg| bg.image()).map(|i| i.format()) {
+            Some(f) if f != want => Err(format!(
+                "background image format {} differs from the target's {}",
+                format_name(f),
+                format_name(want)
+            )),
+            _ => Ok(()),
+        }
     }
 
     /// `clear(background)`: clears viewport ∩ target as `background` says (`None`: color
@@ -514,8 +550,8 @@ impl Graphics3D {
     /// background image's format differs from the target's.
     pub fn clear(&mut self, background: Option<&Background>) -> Result<()> {
         self.bound_mut()?;
-        if !self.bg_format_ok(background) {
-            return iae("background image format differs from the target's");
+        if let Err(m) = self.check_bg_format(background) {
+            return iae(m);
         }
         self.do_clear(background);
         self.flush();
@@ -611,8 +647,8 @@ impl Graphics3D {
             return ise("the active camera is not in the world");
         }
         let bg = world.background();
-        if !self.bg_format_ok(bg.as_ref()) {
-            return ise("background image format differs from the target's");
+        if let Err(m) = self.check_bg_format(bg.as_ref()) {
+            return ise(m);
         }
         let cam_to_world = to_ancestor(&camera.0, &world.0);
         invert(&cam_to_world)?;
@@ -1575,4 +1611,16 @@ fn draw_sprite(
         }),
     );
     let _ = core::record(&s, &call, &mut b.frame);
+}
+
+/// The name of an `Image2D` format, for messages.
+fn format_name(format: i32) -> &'static str {
+    match format {
+        Image2D::ALPHA => "ALPHA",
+        Image2D::LUMINANCE => "LUMINANCE",
+        Image2D::LUMINANCE_ALPHA => "LUMINANCE_ALPHA",
+        Image2D::RGB => "RGB",
+        Image2D::RGBA => "RGBA",
+        _ => "unknown",
+    }
 }

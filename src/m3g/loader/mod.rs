@@ -24,7 +24,7 @@ use std::collections::HashSet;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-pub use render::render_roots;
+pub use render::{render_roots, RenderTarget};
 
 use super::Object3D;
 

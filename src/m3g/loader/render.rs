@@ -4,9 +4,22 @@
 use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
 use crate::m3g::{Graphics3D, Object3D, Object3DExt, World};
 
+/// What [`render_roots`] renders into, which decides the format a World's background image
+/// must have.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RenderTarget {
+    /// A MIDP `Graphics` target, always RGB: what content made for phones renders to.
+    #[default]
+    Graphics,
+    /// A mutable RGBA `Image2D`.
+    RgbaImage,
+}
+
 /// Renders the first World among `roots` (a file without one is an error) at `time_ms` with
-/// its active camera into a `width` × `height` 8-bit RGBA target with a 16-bit depth buffer
-/// and hints 0, cleared by the World's Background (or to black and depth 1 without one).
+/// its active camera into `target` (rendered, either way, through a `width` × `height`
+/// 8-bit RGBA buffer with a 16-bit depth buffer, as the reference images were) with hints 0,
+/// cleared by the World's Background (or to black and depth 1 without one). A background
+/// image of another format than the target's is an error naming both.
 /// `clamp_after_lighting` as in [`Graphics3D::set_clamp_after_lighting`] (`false` for the
 /// reference images). Returns RGB bytes, top row first.
 pub fn render_roots(
@@ -15,6 +28,7 @@ pub fn render_roots(
     width: u32,
     height: u32,
     clamp_after_lighting: bool,
+    target_kind: RenderTarget,
 ) -> std::result::Result<Vec<u8>, String> {
     let world = roots
         .iter()
@@ -37,8 +51,11 @@ pub fn render_roots(
     );
     let mut g = Graphics3D::new();
     g.set_clamp_after_lighting(clamp_after_lighting);
-    g.bind_target(target, true, 0)
-        .map_err(|e| format!("cannot bind a {width}x{height} target: {e}"))?;
+    match target_kind {
+        RenderTarget::Graphics => g.bind_graphics_target(target, true, 0),
+        RenderTarget::RgbaImage => g.bind_target(target, true, 0),
+    }
+    .map_err(|e| format!("cannot bind a {width}x{height} target: {e}"))?;
     let r = g.render_world(&world);
     let target = g.release_target().expect("a core target");
     r.map_err(|e| format!("render(World) failed: {e}"))?;
