@@ -627,7 +627,10 @@ impl Graphics3D {
         let scope = node_data(&camera.0).scope;
         if camera.projection_matrix().is_some() {
             for c in &children {
-                collect_at(c, tf(c).world(Mat4::IDENTITY), 1.0, scope, &mut items)?;
+                // In its own statement: the borrow of `c` must end before its items are
+                // collected (a SkinnedMesh writes its own cache then).
+                let m = tf(c).world(Mat4::IDENTITY);
+                collect_at(c, m, 1.0, scope, &mut items)?;
             }
         }
         let r = self.draw_items(items);
