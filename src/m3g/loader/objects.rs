@@ -449,9 +449,9 @@ pub(crate) fn parse_file(loader: &mut Loader, bytes: &[u8]) -> LoadResult<Loaded
             // values become floats or indices; references become handles). Images and
             // strips, which can grow further, are counted again where they are built.
             let size = std::mem::size_of::<crate::m3g::object::Inner>() as u64 + 64;
-            st.loader.charge(size + 8 * len as u64, || {
-                format!("object {index} ({})", type_name(ty))
-            })?;
+            st.loader
+                .charge(size + 8 * len as u64, || "the object".into())
+                .map_err(|e| oerr(e.message))?;
             let mut c = Cur {
                 d: od,
                 p: 0,
@@ -1028,9 +1028,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             // Each strip of n vertices becomes n - 2 triangles of three 16-bit indices.
             let expanded = 6 * sum;
             st.loader
-                .charge(expanded, || {
-                    format!("object {} (strips of {sum} vertices)", c.index)
-                })
+                .charge(expanded, || format!("strips of {sum} vertices"))
                 .map_err(|e| c.err("stripLengths", e.message))?;
             let tsa = match indices {
                 None => {
