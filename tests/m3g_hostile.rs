@@ -16,6 +16,11 @@ use GLES_CM::m3g::*;
 
 const EXE: &str = env!("CARGO_BIN_EXE_m3g-render");
 
+/// The fuzz targets' rendering of what loaded, compiled and run here too so that it
+/// cannot rot between fuzzing runs (which need nightly and cargo-fuzz).
+#[path = "../fuzz/fuzz_targets/render.rs"]
+mod fuzz_render;
+
 /// A fresh temporary folder for one test.
 fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("m3g-hostile-{}-{name}", std::process::id()));
@@ -484,4 +489,31 @@ fn a_referenced_file_is_read_within_the_budget() {
         .unwrap_err();
     assert!(e.to_string().contains("memory budget"), "{e}");
     let _ = std::fs::remove_dir_all(&d);
+}
+
+/// The fuzz targets' renderer over every corpus file (Worlds through `render_roots`, root
+/// nodes through `render_node`) and over the 100 000-deep chain: no panic.
+#[test]
+fn the_fuzz_renderer_runs_over_the_corpus_and_a_deep_chain() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/m3g-corpus");
+    let mut files = 0;
+    for e in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
+        if e.path().extension().is_some_and(|x| x == "m3g") {
+            let roots = Loader::load_path(e.path()).unwrap();
+            fuzz_render::render_loaded(&roots);
+            files += 1;
+        }
+    }
+    if files == 0 {
+        eprintln!("corpus part skipped: no corpus at {}", dir.display());
+    }
+    on_small_stack(|| {
+        let bytes = writer::save(&[deep_world().as_object3d()], false).unwrap();
+        let roots = Loader::load(&bytes).unwrap();
+        fuzz_render::render_loaded(&roots);
+        // A root that is a node but not a World: the deep chain itself.
+        let chain = roots[0].downcast::<World>().unwrap().child(0).unwrap();
+        roots[0].downcast::<World>().unwrap().remove_child(&chain);
+        fuzz_render::render_loaded(&[chain.as_object3d()]);
+    });
 }
