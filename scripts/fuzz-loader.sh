@@ -1,18 +1,31 @@
 #!/bin/sh
-# Bounded fuzzing of the M3G Loader: scripts/fuzz-loader.sh [SECONDS] (default 60).
-# Seeds libFuzzer with the .m3g corpus in ../shared/m3g-corpus and fails on any crash,
-# panic, timeout (10 s per input) or allocation over 512 MiB. Needs the nightly toolchain
-# and cargo-fuzz; installs them through rustup and cargo when they are missing.
+# Bounded fuzzing of the M3G Loader: scripts/fuzz-loader.sh [SECONDS] (default 60), split
+# between the targets: m3g_loader (one file: load, save, reload, render) and
+# m3g_references (several files in an in-memory file system referring to each other:
+# load, render). Seeds libFuzzer with the .m3g corpus in ../shared/m3g-corpus and fails on
+# any crash, panic, timeout (10 s per input) or allocation over 512 MiB. Needs the nightly
+# toolchain and cargo-fuzz; installs them through rustup and cargo when they are missing.
 set -eu
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
+each=$((seconds / 2))
+[ "$each" -ge 1 ] || each=1
 rustup run nightly rustc --version >/dev/null 2>&1 ||
     rustup toolchain install nightly --profile minimal
 command -v cargo-fuzz >/dev/null 2>&1 || cargo install --locked cargo-fuzz
-corpus=fuzz/corpus/m3g_loader
-mkdir -p "$corpus"
-cp ../shared/m3g-corpus/*.m3g "$corpus"/
+for target in m3g_loader m3g_references; do
+    corpus=fuzz/corpus/$target
+    mkdir -p "$corpus"
+    cp ../shared/m3g-corpus/*.m3g "$corpus"/
+done
+# A seed of the references target: a file whose external reference names the next file.
+printf '\n--\n' >fuzz/corpus/m3g_references/.sep
+cat ../shared/m3g-corpus/memory.m3g fuzz/corpus/m3g_references/.sep \
+    ../shared/m3g-corpus/cube.m3g >fuzz/corpus/m3g_references/memory-then-cube
+rm fuzz/corpus/m3g_references/.sep
 cd fuzz
-cargo +nightly fuzz run m3g_loader "corpus/m3g_loader" -- \
-    -max_total_time="$seconds" -timeout=10 -rss_limit_mb=512 -malloc_limit_mb=512 \
-    -print_final_stats=1
+for target in m3g_loader m3g_references; do
+    cargo +nightly fuzz run "$target" "corpus/$target" -- \
+        -max_total_time="$each" -timeout=10 -rss_limit_mb=512 -malloc_limit_mb=512 \
+        -print_final_stats=1
+done

@@ -1,5 +1,5 @@
 //! `m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera USER_ID]
-//! [--out PATH]`: loads a .m3g file, animates its (first) World to the time, renders it
+//! [--max-memory MIB] [--out PATH]`: loads a .m3g file, animates its (first) World to the time, renders it
 //! under the conditions of the corpus reference images (Background or black, 8-bit RGBA
 //! target, 16-bit depth, hints 0; default 240 × 320) and writes an RGB PNG (default: FILE
 //! with `.png`).
@@ -23,7 +23,7 @@ use GLES_CM::m3g::loader::{render_roots, Loader, RenderTarget};
 use GLES_CM::m3g::{Camera, NodeExt, Object3D, Object3DExt, World};
 
 const USAGE: &str = "\
-usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera USER_ID] [--target rgb|rgba] [--late-clamp] [--out PATH]
+usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera USER_ID] [--target rgb|rgba] [--late-clamp] [--max-memory MIB] [--out PATH]
   FILE           a .m3g file (its first World is rendered)
   --time MS      world time of the (first) frame, default 0
   --frames N     render N frames (1..=100000) at MS, MS+step, ...; writes PATH-000.png, ...
@@ -35,6 +35,8 @@ usage: m3g-render FILE [--time MS] [--frames N --step MS] [--size WxH] [--camera
                  rgba: an RGBA Image2D target, for RGBA background images
   --late-clamp   clamp lit colors after texturing, as Mesa does (the corpus references)
                  instead of right after lighting, as the specification does
+  --max-memory MIB  memory budget of the load in MiB (1..=65536), default 256: a file
+                 (with its external references) needing more is an error
   --out PATH     output PNG, default FILE with the extension .png";
 
 const MAX_FRAMES: u32 = 100_000;
@@ -48,6 +50,7 @@ struct Args {
     camera: Option<i32>,
     target: RenderTarget,
     late_clamp: bool,
+    max_memory: u64,
     out: Option<PathBuf>,
 }
 
@@ -66,6 +69,7 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
     let mut camera = None;
     let mut target = RenderTarget::Graphics;
     let mut late_clamp = false;
+    let mut max_memory = GLES_CM::m3g::loader::DEFAULT_MAX_MEMORY;
     let mut out = None;
     while let Some(a) = it.next() {
         let mut value = |name: &str| it.next().ok_or_else(|| format!("{name} needs a value"));
@@ -112,6 +116,14 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
                 }
             }
             "--late-clamp" => late_clamp = true,
+            "--max-memory" => {
+                let v = value("--max-memory")?;
+                let mib: u64 = parse_int("--max-memory", &v, "a size in MiB")?;
+                if !(1..=65536).contains(&mib) {
+                    return Err(format!("--max-memory: {mib} is not in 1..=65536"));
+                }
+                max_memory = mib << 20;
+            }
             "--out" => out = Some(PathBuf::from(value("--out")?)),
             "-h" | "--help" => return Err(String::new()),
             s if s.starts_with('-') && s.len() > 1 => return Err(format!("unknown option {s}")),
@@ -146,6 +158,7 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
         camera,
         target,
         late_clamp,
+        max_memory,
         out,
     })
 }
@@ -394,6 +407,7 @@ impl From<String> for Failure {
 fn run() -> Result<String, Failure> {
     let a = parse_args(std::env::args().skip(1)).map_err(|e| Failure(e, true))?;
     let loaded = Loader::new()
+        .with_max_memory(a.max_memory)
         .load_file(&a.file)
         .map_err(|e| format!("{}: {e}", a.file.display()))?;
     let world = loaded

@@ -655,7 +655,7 @@ impl Graphics3D {
         self.camera = Some((camera.clone(), cam_to_world));
         self.lights.clear();
         let mut lights = Vec::new();
-        collect_lights(&world.0, &world.0, true, &mut lights);
+        collect_lights(&world.0, &mut lights);
         self.lights = lights.into_iter().map(Some).collect();
         self.do_clear(bg.as_ref());
         let children = world.0.borrow().group().unwrap().children.clone();
@@ -663,7 +663,10 @@ impl Graphics3D {
         let scope = node_data(&camera.0).scope;
         if camera.projection_matrix().is_some() {
             for c in &children {
-                collect(c, Mat4::IDENTITY, 1.0, scope, &mut items)?;
+                // In its own statement: the borrow of `c` must end before its items are
+                // collected (a SkinnedMesh writes its own cache then).
+                let m = tf(c).world(Mat4::IDENTITY);
+                collect_at(c, m, 1.0, scope, &mut items)?;
             }
         }
         let r = self.draw_items(items);
@@ -851,29 +854,32 @@ fn argb_to_rgba(c: u32) -> [f32; 4] {
     [f(16), f(8), f(0), f(24)]
 }
 
-fn collect_lights(r: &ObjRef, world: &ObjRef, enabled: bool, out: &mut Vec<(Light, Mat4)>) {
-    let (enabled, children, is_light) = {
-        let i = r.borrow();
-        let e = enabled && i.node.as_ref().is_some_and(|n| n.rendering);
-        (
-            e,
-            i.group()
-                .map(|g| g.children.clone())
-                .unwrap_or_default()
-                .into_iter()
-                .chain(super::deform::skeleton_of(r))
-                .collect::<Vec<_>>(),
-            matches!(i.kind, Kind::Light(_)),
-        )
-    };
-    if !enabled {
-        return;
-    }
-    if is_light {
-        out.push((Light(r.clone()), to_ancestor(r, world)));
-    }
-    for c in &children {
-        collect_lights(c, world, true, out);
+/// The enabled lights under `world` in depth-first pre-order (the order the lights are
+/// numbered in). A heap stack, not recursion: a loaded file can nest groups deeper than the
+/// thread's stack allows.
+fn collect_lights(world: &ObjRef, out: &mut Vec<(Light, Mat4)>) {
+    let mut stack = vec![world.clone()];
+    while let Some(r) = stack.pop() {
+        let (enabled, children, is_light) = {
+            let i = r.borrow();
+            (
+                i.node.as_ref().is_some_and(|n| n.rendering),
+                i.group()
+                    .map(|g| g.children.clone())
+                    .unwrap_or_default()
+                    .into_iter()
+                    .chain(super::deform::skeleton_of(&r))
+                    .collect::<Vec<_>>(),
+                matches!(i.kind, Kind::Light(_)),
+            )
+        };
+        if !enabled {
+            continue;
+        }
+        if is_light {
+            out.push((Light(r.clone()), to_ancestor(&r, world)));
+        }
+        stack.extend(children.into_iter().rev());
     }
 }
 
@@ -895,36 +901,58 @@ fn validate(vb: &VertexBuffer, ib: &IndexBuffer) -> Result<()> {
     Ok(())
 }
 
-/// Collects the drawable items of `r` (whose parent's world transform is `parent`).
-fn collect(r: &ObjRef, parent: Mat4, alpha: f32, scope: i32, out: &mut Vec<Item>) -> Result<()> {
-    let m = tf(r).world(parent);
-    collect_at(r, m, alpha, scope, out)
+/// One step of the drawable-item traversal.
+enum Step {
+    /// Visit a node whose own node-to-world transform is the matrix.
+    Node(ObjRef, Mat4, f32),
+    /// Emit a mesh's or sprite's items (after its skeleton's, which are its children's).
+    Emit(ObjRef, Mat4, f32, i32),
 }
 
-/// Collects `r` with `m` as its own node-to-world transform.
+/// Collects the drawable items of `r` and its descendants, with `m` as `r`'s own
+/// node-to-world transform, in depth-first pre-order (a SkinnedMesh after its skeleton),
+/// stopping at the first invalid submesh. A heap stack, not recursion: a loaded file can
+/// nest groups deeper than the thread's stack allows.
 fn collect_at(r: &ObjRef, m: Mat4, alpha: f32, cam_scope: i32, out: &mut Vec<Item>) -> Result<()> {
-    let (rendering, a, scope) = {
-        let n = node_data(r);
-        (n.rendering, n.alpha, n.scope)
-    };
-    if !rendering {
-        return Ok(());
-    }
-    let alpha = alpha * a;
-    let kind_children = r.borrow().group().map(|g| g.children.clone());
-    if let Some(children) = kind_children {
-        for c in &children {
-            collect(c, m, alpha, cam_scope, out)?;
+    let mut stack = vec![Step::Node(r.clone(), m, alpha)];
+    while let Some(step) = stack.pop() {
+        match step {
+            Step::Node(r, m, alpha) => {
+                let (rendering, a, scope) = {
+                    let n = node_data(&r);
+                    (n.rendering, n.alpha, n.scope)
+                };
+                if !rendering {
+                    continue;
+                }
+                let alpha = alpha * a;
+                let kind_children = r.borrow().group().map(|g| g.children.clone());
+                if let Some(children) = kind_children {
+                    for c in children.iter().rev() {
+                        let cm = tf(c).world(m);
+                        stack.push(Step::Node(c.clone(), cm, alpha));
+                    }
+                    continue;
+                }
+                stack.push(Step::Emit(r.clone(), m, alpha, scope));
+                // A SkinnedMesh's skeleton is its child branch.
+                if let Some(skeleton) = super::deform::skeleton_of(&r) {
+                    let sm = tf(&skeleton).world(m);
+                    stack.push(Step::Node(skeleton, sm, alpha));
+                }
+            }
+            Step::Emit(r, m, alpha, scope) => {
+                if scope & cam_scope != 0 {
+                    emit(&r, m, alpha, scope, out)?;
+                }
+            }
         }
-        return Ok(());
     }
-    // A SkinnedMesh's skeleton is its child branch.
-    if let Some(skeleton) = super::deform::skeleton_of(r) {
-        collect(&skeleton, m, alpha, cam_scope, out)?;
-    }
-    if scope & cam_scope == 0 {
-        return Ok(());
-    }
+    Ok(())
+}
+
+/// The items of one Mesh or Sprite3D.
+fn emit(r: &ObjRef, m: Mat4, alpha: f32, scope: i32, out: &mut Vec<Item>) -> Result<()> {
     // MorphingMesh / SkinnedMesh: the deformed copy (recomputed only when needed).
     let deformed = super::deform::deformed_vertex_buffer(r)?;
     if let Some(mesh) = Mesh::accepts(&r.borrow()).then(|| Mesh(r.clone())) {

@@ -95,6 +95,23 @@ impl Image2D {
         ))
     }
 
+    /// [`with_pixels`](Self::with_pixels) taking the pixels without a copy (the PNG
+    /// loader's decoded buffer: a second copy would double its peak memory).
+    pub(crate) fn with_pixel_vec(
+        format: i32,
+        width: i32,
+        height: i32,
+        mut pixels: Vec<u8>,
+    ) -> Result<Image2D> {
+        let b = check(format, width, height)?;
+        let n = width as usize * height as usize * b;
+        if pixels.len() < n {
+            return iae("pixel array too short");
+        }
+        pixels.truncate(n);
+        Ok(Image2D::make(format, width, height, false, pixels))
+    }
+
     /// `Image2D(format, width, height, byte[] image, byte[] palette)`: an immutable
     /// palettized image, one index byte per pixel into up to 256 palette entries of the
     /// format's size (entries past 256 are ignored, missing ones read as 0).

@@ -460,30 +460,81 @@ fn duplicate_raw(r: &ObjRef) -> ObjRef {
     copy
 }
 
+/// Copies `r` (a node) and everything below it: children and a SkinnedMesh's skeleton,
+/// each copy parented to the copy of its parent. Iterative, because a loaded file can nest
+/// groups deeper than the thread's stack allows recursion.
 fn duplicate_node(
     r: &ObjRef,
     parent: Option<&ObjRef>,
     map: &mut HashMap<*const RefCell<Inner>, ObjRef>,
 ) -> ObjRef {
-    let mut inner = r.borrow().clone();
-    if let Some(n) = inner.node.as_mut() {
-        n.parent = parent.map(Rc::downgrade);
+    let mut copy_one = |o: &ObjRef, parent: Option<&ObjRef>| {
+        let mut inner = o.borrow().clone();
+        if let Some(n) = inner.node.as_mut() {
+            n.parent = parent.map(Rc::downgrade);
+        }
+        let c = Rc::new(RefCell::new(inner));
+        map.insert(ptr(o), c.clone());
+        c
+    };
+    let root = copy_one(r, parent);
+    // Each copy on the stack still refers to the original children and skeleton (a shallow
+    // clone); they are replaced by their copies when it is popped.
+    let mut stack = vec![root.clone()];
+    while let Some(c) = stack.pop() {
+        let originals = c
+            .borrow_mut()
+            .group_mut()
+            .map(|g| std::mem::take(&mut g.children))
+            .unwrap_or_default();
+        let copies: Vec<ObjRef> = originals.iter().map(|o| copy_one(o, Some(&c))).collect();
+        if let Some(g) = c.borrow_mut().group_mut() {
+            g.children = copies.clone();
+        }
+        stack.extend(copies.into_iter().rev());
+        super::skinned_mesh::duplicate_skeleton(&c, &mut |s| {
+            let n = copy_one(s, Some(&c));
+            stack.push(n.clone());
+            n
+        });
     }
-    let children = inner
-        .group()
-        .map(|g| g.children.clone())
-        .unwrap_or_default();
-    let copy = Rc::new(RefCell::new(inner));
-    map.insert(ptr(r), copy.clone());
-    let copies: Vec<ObjRef> = children
-        .iter()
-        .map(|c| duplicate_node(c, Some(&copy), map))
-        .collect();
-    if let Some(g) = copy.borrow_mut().group_mut() {
-        g.children = copies;
+    root
+}
+
+impl Drop for Inner {
+    /// Dropping the last reference to the top of a deep Group chain would otherwise drop
+    /// each level inside the previous level's drop and overflow the stack: the children
+    /// (and a SkinnedMesh's skeleton's children) that nothing else holds are taken out and
+    /// dropped one by one from a heap stack instead.
+    fn drop(&mut self) {
+        let mut stack = self.take_owned_subtrees();
+        while let Some(r) = stack.pop() {
+            if let Ok(cell) = Rc::try_unwrap(r) {
+                let mut inner = cell.into_inner();
+                stack.extend(inner.take_owned_subtrees());
+            }
+        }
     }
-    super::skinned_mesh::duplicate_skeleton(&copy, &mut |s| duplicate_node(s, Some(&copy), map));
-    copy
+}
+
+impl Inner {
+    fn take_owned_subtrees(&mut self) -> Vec<ObjRef> {
+        if let Some(g) = self.group_mut() {
+            return std::mem::take(&mut g.children);
+        }
+        if let Kind::Mesh(m) = &mut self.kind {
+            if let super::deform::MeshExt::Skinned(s) = &mut m.ext {
+                // Only a skeleton this mesh alone holds may be emptied: another holder still
+                // sees it.
+                if Rc::strong_count(&s.skeleton.0) == 1 {
+                    if let Some(g) = s.skeleton.0.borrow_mut().group_mut() {
+                        return std::mem::take(&mut g.children);
+                    }
+                }
+            }
+        }
+        Vec::new()
+    }
 }
 
 /// The Transformable part: translation T, orientation R, scale S and general matrix M.

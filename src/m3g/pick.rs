@@ -155,32 +155,44 @@ fn run(
     }))
 }
 
+/// Picks `r` (whose node-to-group transform is `m`) and its descendants in depth-first
+/// pre-order, a SkinnedMesh after its skeleton. A heap stack, not recursion: a loaded file
+/// can nest groups deeper than the thread's stack allows.
 fn visit(r: &ObjRef, m: Mat4, p: &mut Pick) -> Result<()> {
-    let (picking, scope) = {
-        let n = node_data(r);
-        (n.picking, n.scope)
-    };
-    if !picking {
-        return Ok(());
-    }
-    let children = r.borrow().group().map(|g| g.children.clone());
-    if let Some(children) = children {
-        for c in &children {
-            visit(c, m * local(c), p)?;
+    // `true`: the node's own geometry, once its skeleton has been picked.
+    let mut stack = vec![(r.clone(), m, false)];
+    while let Some((r, m, own)) = stack.pop() {
+        let (picking, scope) = {
+            let n = node_data(&r);
+            (n.picking, n.scope)
+        };
+        if own {
+            if scope & p.scope == 0 {
+                continue;
+            }
+            if Mesh::accepts(&r.borrow()) {
+                pick_mesh(&Mesh(r.clone()), m, p)?;
+            } else if Sprite3D::accepts(&r.borrow()) {
+                pick_sprite(&Sprite3D(r.clone()), m, p);
+            }
+            continue;
         }
-        return Ok(());
-    }
-    // A SkinnedMesh's skeleton is its child branch.
-    if let Some(skeleton) = super::deform::skeleton_of(r) {
-        visit(&skeleton, m * local(&skeleton), p)?;
-    }
-    if scope & p.scope == 0 {
-        return Ok(());
-    }
-    if Mesh::accepts(&r.borrow()) {
-        pick_mesh(&Mesh(r.clone()), m, p)?;
-    } else if Sprite3D::accepts(&r.borrow()) {
-        pick_sprite(&Sprite3D(r.clone()), m, p);
+        if !picking {
+            continue;
+        }
+        let children = r.borrow().group().map(|g| g.children.clone());
+        if let Some(children) = children {
+            for c in children.iter().rev() {
+                stack.push((c.clone(), m * local(c), false));
+            }
+            continue;
+        }
+        stack.push((r.clone(), m, true));
+        // A SkinnedMesh's skeleton is its child branch.
+        if let Some(skeleton) = super::deform::skeleton_of(&r) {
+            let sm = m * local(&skeleton);
+            stack.push((skeleton, sm, false));
+        }
     }
     Ok(())
 }

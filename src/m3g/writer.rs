@@ -136,29 +136,51 @@ fn dependencies(r: &ObjRef) -> Vec<ObjRef> {
     v
 }
 
+/// Appends `r` and everything it depends on to `order`, dependencies first (a post-order
+/// depth-first walk; `state` is `false` while an object is on the path, `true` once
+/// written). A heap stack, not recursion: a graph can nest groups deeper than the thread's
+/// stack allows.
 fn visit(
     r: &ObjRef,
     order: &mut Vec<ObjRef>,
     state: &mut HashMap<Key, bool>,
 ) -> std::result::Result<(), WriteError> {
-    let k = std::rc::Rc::as_ptr(r);
-    match state.get(&k) {
-        Some(true) => return Ok(()),
-        Some(false) => {
-            return Err(WriteError(format!(
-                "a reference cycle through a {} (a node aligned to its ancestor?)",
-                r.borrow().class_name()
-            )))
+    if state.get(&std::rc::Rc::as_ptr(r)) == Some(&true) {
+        return Ok(());
+    }
+    state.insert(std::rc::Rc::as_ptr(r), false);
+    // Each entry: an object on the path and its dependencies not yet visited, last first.
+    let mut stack: Vec<(ObjRef, Vec<ObjRef>)> = vec![(r.clone(), rev(dependencies(r)))];
+    while let Some((obj, deps)) = stack.last_mut() {
+        let Some(d) = deps.pop() else {
+            let obj = obj.clone();
+            stack.pop();
+            state.insert(std::rc::Rc::as_ptr(&obj), true);
+            order.push(obj);
+            continue;
+        };
+        let k = std::rc::Rc::as_ptr(&d);
+        match state.get(&k) {
+            Some(true) => {}
+            Some(false) => {
+                return Err(WriteError(format!(
+                    "a reference cycle through a {} (a node aligned to its ancestor?)",
+                    d.borrow().class_name()
+                )))
+            }
+            None => {
+                state.insert(k, false);
+                let dd = rev(dependencies(&d));
+                stack.push((d, dd));
+            }
         }
-        None => {}
     }
-    state.insert(k, false);
-    for d in dependencies(r) {
-        visit(&d, order, state)?;
-    }
-    state.insert(k, true);
-    order.push(r.clone());
     Ok(())
+}
+
+fn rev(mut v: Vec<ObjRef>) -> Vec<ObjRef> {
+    v.reverse();
+    v
 }
 
 struct W<'a> {

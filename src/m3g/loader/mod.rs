@@ -13,8 +13,9 @@
 //! The [`LoadError`] (Java's `IOException`) names the object index, its class and the field.
 //! No allocation is made that the input does not justify: every count is checked against the
 //! bytes left before anything is allocated, zlib output is bounded by the declared length and
-//! by deflate's maximum ratio, and mutable images (which carry no pixels) are capped at
-//! [`MAX_MUTABLE_IMAGE_PIXELS`].
+//! by deflate's maximum ratio, mutable images (which carry no pixels) are capped at
+//! [`MAX_MUTABLE_IMAGE_PIXELS`], and everything a load allocates is counted against its
+//! memory budget before it is allocated (see [Loader's limits](Loader#limits)).
 
 mod objects;
 mod png;
@@ -128,18 +129,184 @@ pub struct Loaded {
     pub header: Header,
 }
 
+/// The default memory budget of one load: 256 MiB. Far above any content the corpus holds
+/// (its largest file needs a few MiB) and above one 4096² RGBA texture (64 MiB) with room
+/// to spare, yet small enough that a hostile file cannot exhaust a phone-sized or
+/// CI-sized machine.
+pub const DEFAULT_MAX_MEMORY: u64 = 256 << 20;
+
+/// The file access of a [`Loader`]: the real file system ([`StdFileSystem`]) unless
+/// [`Loader::with_file_system`] supplies another (an in-memory one for tests and fuzzing,
+/// [`MemoryFileSystem`]).
+pub trait FileSystem {
+    /// The canonical form of `path` (absolute, no `.` or `..`, symbolic links resolved);
+    /// an error when it does not exist.
+    fn canonicalize(&self, path: &Path) -> std::io::Result<PathBuf>;
+    /// The bytes of the regular file at `path`. An error, without blocking, when it is not
+    /// a regular file (a FIFO, a device, a folder), and an error as soon as it turns out
+    /// longer than `limit` bytes (without reading more than `limit + 1`).
+    fn read_regular(&self, path: &Path, limit: u64) -> std::io::Result<Vec<u8>>;
+}
+
+/// The operating system's file system.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct StdFileSystem;
+
+impl FileSystem for StdFileSystem {
+    fn canonicalize(&self, path: &Path) -> std::io::Result<PathBuf> {
+        std::fs::canonicalize(path)
+    }
+
+    fn read_regular(&self, path: &Path, limit: u64) -> std::io::Result<Vec<u8>> {
+        use std::io::Read;
+        let not_regular = || {
+            std::io::Error::new(
+                std::io::ErrorKind::InvalidInput,
+                "not a regular file (only regular files are read)",
+            )
+        };
+        if !std::fs::metadata(path)?.is_file() {
+            return Err(not_regular());
+        }
+        // The path may have been replaced by a FIFO since the check: a non-blocking open
+        // returns at once instead of waiting for a writer, and the check is repeated on
+        // what was actually opened.
+        let mut opts = std::fs::OpenOptions::new();
+        opts.read(true);
+        #[cfg(unix)]
+        std::os::unix::fs::OpenOptionsExt::custom_flags(&mut opts, libc::O_NONBLOCK);
+        let f = opts.open(path)?;
+        let meta = f.metadata()?;
+        if !meta.is_file() {
+            return Err(not_regular());
+        }
+        if meta.len() > limit {
+            return Err(too_long(limit));
+        }
+        let mut out = Vec::new();
+        // A file that grows while read is still cut at the limit.
+        f.take(limit + 1).read_to_end(&mut out)?;
+        if out.len() as u64 > limit {
+            return Err(too_long(limit));
+        }
+        Ok(out)
+    }
+}
+
+fn too_long(limit: u64) -> std::io::Error {
+    std::io::Error::other(format!(
+        "longer than the {limit} bytes left in the load's memory budget"
+    ))
+}
+
+/// An in-memory file system: regular files by absolute path, every folder implied by
+/// them. For tests and fuzzing of external references without touching the disk.
+#[derive(Clone, Debug, Default)]
+pub struct MemoryFileSystem {
+    /// The files, by normalized absolute path.
+    pub files: std::collections::HashMap<PathBuf, Vec<u8>>,
+}
+
+impl MemoryFileSystem {
+    /// An empty file system.
+    pub fn new() -> MemoryFileSystem {
+        MemoryFileSystem::default()
+    }
+
+    /// Adds (or replaces) the file at `path` (made absolute from `/`).
+    pub fn insert(&mut self, path: impl AsRef<Path>, bytes: Vec<u8>) {
+        self.files.insert(normalize(path.as_ref()), bytes);
+    }
+}
+
+/// `path` made absolute from `/`, with `.` and `..` resolved lexically.
+fn normalize(path: &Path) -> PathBuf {
+    use std::path::Component;
+    let mut out = PathBuf::from("/");
+    for c in path.components() {
+        match c {
+            Component::ParentDir => {
+                out.pop();
+            }
+            Component::Normal(n) => out.push(n),
+            _ => {}
+        }
+    }
+    out
+}
+
+impl FileSystem for MemoryFileSystem {
+    fn canonicalize(&self, path: &Path) -> std::io::Result<PathBuf> {
+        let p = normalize(path);
+        let is_dir = || self.files.keys().any(|f| f.starts_with(&p) && *f != p);
+        if self.files.contains_key(&p) || is_dir() {
+            Ok(p)
+        } else {
+            Err(std::io::ErrorKind::NotFound.into())
+        }
+    }
+
+    fn read_regular(&self, path: &Path, limit: u64) -> std::io::Result<Vec<u8>> {
+        match self.files.get(&normalize(path)) {
+            Some(b) if b.len() as u64 > limit => Err(too_long(limit)),
+            Some(b) => Ok(b.clone()),
+            None => Err(std::io::ErrorKind::NotFound.into()),
+        }
+    }
+}
+
 /// The M3G Loader.
 ///
 /// | Java | Rust |
 /// |---|---|
 /// | `Loader.load(byte[], int)` | [`Loader::load`] (slice the offset off) |
 /// | `Loader.load(String)` | [`Loader::load_path`] (a file name) or [`Loader::load_bytes`] with a [resolver](Loader::with_resolver) |
-#[derive(Default)]
+///
+/// # Limits
+///
+/// One load (a call of `load_file` or `load_bytes`, with every external reference it
+/// follows) has a memory budget, [`DEFAULT_MAX_MEMORY`] unless
+/// [`with_max_memory`](Self::with_max_memory) sets another. What the load would allocate is
+/// counted before it is allocated: each file read, each inflated zlib section, each
+/// Image2D's pixels (a PNG's from its header, before decoding), each triangle strip's
+/// expanded triangles, and each object's own size. Past the budget the load stops with a
+/// [`LoadError`] whose message says "memory budget".
+///
+/// External references: each distinct file (by canonical path) or resolver URI is loaded
+/// once per load, every reference to it getting the same object; a file referring back
+/// to one being loaded is an error ("loop"), as is nesting deeper than
+/// [`MAX_REFERENCE_DEPTH`]. Only regular files are read (a FIFO, device or folder is an
+/// error, found without blocking), and only inside the folder of the referencing file
+/// (or its subfolders): `../x.m3g`, an absolute `file://` URI elsewhere, or a symbolic
+/// link leading out is refused unless [`allow_outside_references`](
+/// Self::allow_outside_references) is set.
 pub struct Loader {
     base: Option<PathBuf>,
     resolver: Option<Box<Resolver>>,
+    fs: Box<dyn FileSystem>,
+    max_memory: u64,
+    allow_outside: bool,
     /// Files being loaded (loop detection).
     active: Vec<String>,
+    /// Bytes counted against the budget in this load.
+    used: u64,
+    /// The first root of every file or URI loaded in this load, by canonical key.
+    cache: std::collections::HashMap<String, Object3D>,
+}
+
+impl Default for Loader {
+    fn default() -> Self {
+        Loader {
+            base: None,
+            resolver: None,
+            fs: Box::new(StdFileSystem),
+            max_memory: DEFAULT_MAX_MEMORY,
+            allow_outside: false,
+            active: Vec::new(),
+            used: 0,
+            cache: Default::default(),
+        }
+    }
 }
 
 impl fmt::Debug for Loader {
@@ -147,12 +314,15 @@ impl fmt::Debug for Loader {
         f.debug_struct("Loader")
             .field("base", &self.base)
             .field("resolver", &self.resolver.is_some())
+            .field("max_memory", &self.max_memory)
+            .field("allow_outside", &self.allow_outside)
             .finish()
     }
 }
 
 impl Loader {
-    /// A loader with no base folder and no resolver.
+    /// A loader with no base folder, no resolver, the real file system and the default
+    /// memory budget.
     pub fn new() -> Loader {
         Loader::default()
     }
@@ -164,12 +334,31 @@ impl Loader {
     }
 
     /// Resolves URIs that are not relative file names (or any URI when there is no base
-    /// folder) through `f`.
+    /// folder) through `f`. What `f` returns is counted against the budget after the call:
+    /// bounding its own reads is up to `f`.
     pub fn with_resolver(
         mut self,
         f: impl Fn(&str) -> std::io::Result<Vec<u8>> + 'static,
     ) -> Loader {
         self.resolver = Some(Box::new(f));
+        self
+    }
+
+    /// Reads files through `fs` instead of the operating system.
+    pub fn with_file_system(mut self, fs: impl FileSystem + 'static) -> Loader {
+        self.fs = Box::new(fs);
+        self
+    }
+
+    /// Sets the memory budget of each load, in bytes (see [Limits](Self#limits)).
+    pub fn with_max_memory(mut self, bytes: u64) -> Loader {
+        self.max_memory = bytes;
+        self
+    }
+
+    /// Lets external references name files outside the referencing file's folder.
+    pub fn allow_outside_references(mut self, allow: bool) -> Loader {
+        self.allow_outside = allow;
         self
     }
 
@@ -185,29 +374,74 @@ impl Loader {
         Ok(Loader::new().load_file(path)?.roots)
     }
 
-    /// Loads a file from disk (its folder becomes the base for relative references).
+    /// Loads a file (its folder becomes the base for relative references).
     pub fn load_file(&mut self, path: impl AsRef<Path>) -> LoadResult<Loaded> {
+        self.begin();
         let path = path.as_ref();
-        let bytes = std::fs::read(path)
+        let key = self
+            .fs
+            .canonicalize(path)
             .map_err(|e| LoadError::file(format!("cannot read {}: {e}", path.display())))?;
+        let bytes = self.read(&key)?;
         let saved = self.base.take();
         self.base = Some(
-            path.parent()
+            key.parent()
                 .map(Path::to_path_buf)
-                .unwrap_or_else(|| PathBuf::from(".")),
+                .unwrap_or_else(|| PathBuf::from("/")),
         );
-        let key = std::fs::canonicalize(path)
-            .unwrap_or_else(|_| path.to_path_buf())
-            .display()
-            .to_string();
-        let r = self.load_keyed(&bytes, key);
+        let r = self.load_keyed(&bytes, key.display().to_string());
         self.base = saved;
+        self.end();
         r
     }
 
     /// Loads bytes with this loader's base folder and resolver.
     pub fn load_bytes(&mut self, bytes: &[u8]) -> LoadResult<Loaded> {
-        self.load_inner(bytes)
+        self.begin();
+        let r = self.load_inner(bytes);
+        self.end();
+        r
+    }
+
+    fn begin(&mut self) {
+        self.used = 0;
+        self.active.clear();
+        self.cache.clear();
+    }
+
+    fn end(&mut self) {
+        // The objects belong to the caller now; the loader keeps nothing alive.
+        self.cache.clear();
+    }
+
+    /// Counts `bytes` more against the load's memory budget, before they are allocated.
+    pub(crate) fn charge(&mut self, bytes: u64, what: impl FnOnce() -> String) -> LoadResult<()> {
+        let total = self.used.saturating_add(bytes);
+        if total > self.max_memory {
+            return Err(LoadError::file(format!(
+                "{} needs {bytes} bytes, over the load's memory budget of {} bytes ({} already used; Loader::with_max_memory sets it)",
+                what(),
+                self.max_memory,
+                self.used
+            )));
+        }
+        self.used = total;
+        Ok(())
+    }
+
+    /// What is left of the budget.
+    pub(crate) fn remaining(&self) -> u64 {
+        self.max_memory.saturating_sub(self.used)
+    }
+
+    /// Reads the regular file at `path` (canonical), counted against the budget.
+    fn read(&mut self, path: &Path) -> LoadResult<Vec<u8>> {
+        let bytes = self
+            .fs
+            .read_regular(path, self.remaining())
+            .map_err(|e| LoadError::file(format!("cannot read {}: {e}", path.display())))?;
+        self.charge(bytes.len() as u64, || format!("reading {}", path.display()))?;
+        Ok(bytes)
     }
 
     fn load_keyed(&mut self, bytes: &[u8], key: String) -> LoadResult<Loaded> {
@@ -227,7 +461,7 @@ impl Loader {
 
     fn load_inner(&mut self, bytes: &[u8]) -> LoadResult<Loaded> {
         if bytes.starts_with(&PNG_SIGNATURE) {
-            let img = png::decode(bytes)?;
+            let img = png::decode(self, bytes)?;
             let o: Object3D = img.into();
             return Ok(Loaded {
                 roots: vec![o.clone()],
@@ -243,29 +477,63 @@ impl Loader {
         objects::parse_file(self, bytes)
     }
 
-    /// Loads the target of an external reference and returns its first root.
+    /// The canonical path of the file a relative or `file://` reference names, refused
+    /// when it leaves the base folder (unless allowed).
+    fn locate(&self, uri: &str, path: &Path) -> LoadResult<PathBuf> {
+        let canonical = self
+            .fs
+            .canonicalize(path)
+            .map_err(|e| LoadError::file(format!("cannot read {}: {e}", path.display())))?;
+        if !self.allow_outside {
+            let inside = match &self.base {
+                Some(b) => self
+                    .fs
+                    .canonicalize(b)
+                    .is_ok_and(|b| canonical.starts_with(b)),
+                None => false,
+            };
+            if !inside {
+                return Err(LoadError::file(format!(
+                    "external reference {uri:?} leads to {}, outside the folder of the referencing file (Loader::allow_outside_references permits it)",
+                    canonical.display()
+                )));
+            }
+        }
+        Ok(canonical)
+    }
+
+    /// Loads the target of an external reference (once per load) and returns its first
+    /// root.
     pub(crate) fn resolve(&mut self, uri: &str) -> LoadResult<Object3D> {
         let relative = !uri.contains(':') && !uri.starts_with('/');
-        let (bytes, key, base) = if let (true, Some(base)) = (relative, self.base.clone()) {
-            let p = base.join(uri);
-            let b = std::fs::read(&p)
-                .map_err(|e| LoadError::file(format!("cannot read {}: {e}", p.display())))?;
-            let key = std::fs::canonicalize(&p)
-                .unwrap_or_else(|_| p.clone())
-                .display()
-                .to_string();
-            (b, key, p.parent().map(Path::to_path_buf))
+        let target = if let (true, Some(base)) = (relative, &self.base) {
+            Some(self.locate(uri, &base.join(uri))?)
         } else if let Some(path) = uri
             .strip_prefix("file://")
             .filter(|_| self.resolver.is_none())
         {
-            let p = PathBuf::from(path);
-            let b = std::fs::read(&p)
-                .map_err(|e| LoadError::file(format!("cannot read {}: {e}", p.display())))?;
-            (b, uri.to_string(), p.parent().map(Path::to_path_buf))
+            Some(self.locate(uri, Path::new(path))?)
+        } else {
+            None
+        };
+        let key = match &target {
+            Some(p) => p.display().to_string(),
+            None => uri.to_string(),
+        };
+        if let Some(o) = self.cache.get(&key) {
+            return Ok(o.clone());
+        }
+        if self.active.contains(&key) {
+            return Err(LoadError::file(format!(
+                "external reference loop: {uri:?} refers back to a file being loaded"
+            )));
+        }
+        let (bytes, base) = if let Some(p) = &target {
+            (self.read(p)?, p.parent().map(Path::to_path_buf))
         } else if let Some(r) = &self.resolver {
             let b = r(uri).map_err(|e| LoadError::file(format!("cannot resolve {uri:?}: {e}")))?;
-            (b, uri.to_string(), self.base.clone())
+            self.charge(b.len() as u64, || format!("external reference {uri:?}"))?;
+            (b, self.base.clone())
         } else {
             return Err(LoadError::file(format!(
                 "cannot resolve external reference {uri:?}: no base folder or resolver"
@@ -277,17 +545,18 @@ impl Loader {
             )));
         }
         let saved = std::mem::replace(&mut self.base, base);
-        let r = self.load_keyed(&bytes, key);
+        let r = self.load_keyed(&bytes, key.clone());
         self.base = saved;
         let loaded = r.map_err(|mut e| {
             e.message = format!("in external reference {uri:?}: {}", e.message);
             e
         })?;
-        loaded
-            .roots
-            .into_iter()
-            .next()
-            .ok_or_else(|| LoadError::file(format!("external reference {uri:?} has no objects")))
+        let first =
+            loaded.roots.into_iter().next().ok_or_else(|| {
+                LoadError::file(format!("external reference {uri:?} has no objects"))
+            })?;
+        self.cache.insert(key, first.clone());
+        Ok(first)
     }
 }
 

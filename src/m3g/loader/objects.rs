@@ -370,6 +370,9 @@ pub(crate) fn parse_file(loader: &mut Loader, bytes: &[u8]) -> LoadResult<Loaded
                         body.len()
                     )));
                 }
+                st.loader.charge(ulen as u64, || {
+                    format!("section {section} (zlib, UncompressedLength {ulen})")
+                })?;
                 let out = miniz_oxide::inflate::decompress_to_vec_zlib_with_limit(body, ulen)
                     .map_err(|e| {
                         serr(format!(
@@ -442,6 +445,13 @@ pub(crate) fn parse_file(loader: &mut Loader, bytes: &[u8]) -> LoadResult<Loaded
                 }
                 _ => return Err(oerr(format!("object type {ty} is reserved"))),
             }
+            // The object cell itself, plus what its data can grow into once decoded (8-bit
+            // values become floats or indices; references become handles). Images and
+            // strips, which can grow further, are counted again where they are built.
+            let size = std::mem::size_of::<crate::m3g::object::Inner>() as u64 + 64;
+            st.loader
+                .charge(size + 8 * len as u64, || "the object".into())
+                .map_err(|e| oerr(e.message))?;
             let mut c = Cur {
                 d: od,
                 p: 0,
@@ -927,6 +937,12 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                         format!("mutable image {w}x{h} exceeds the loader's limit"),
                     ));
                 }
+                let bytes = px * bpp;
+                st.loader
+                    .charge(bytes, || {
+                        format!("object {} (mutable Image2D {w}x{h})", c.index)
+                    })
+                    .map_err(|e| c.err("width", e.message))?;
                 c.api("width", Image2D::new(format, w, h))?
             } else {
                 let pn = c.count("palette", 1)?;
@@ -1009,6 +1025,11 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                 sum += l as u64;
                 lengths.push(l.min(i32::MAX as u32) as i32);
             }
+            // Each strip of n vertices becomes n - 2 triangles of three 16-bit indices.
+            let expanded = 6 * sum;
+            st.loader
+                .charge(expanded, || format!("strips of {sum} vertices"))
+                .map_err(|e| c.err("stripLengths", e.message))?;
             let tsa = match indices {
                 None => {
                     if start as u64 + sum > 65535 {
