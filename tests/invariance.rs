@@ -540,3 +540,125 @@ fn lod_filters_and_combine_agree_across_span_routines() {
         }
     }
 }
+
+/// Every span route the vectorized code has (simple: depth × smooth × blend, including the
+/// one-word fill; textured: fog only, NEAREST, bilinear, trilinear, other filters, several
+/// units; with and without depth and blending) on every color format, with dithering off
+/// and on, gives the pixels of the per-pixel routine (alpha test ALWAYS, an unrelated state
+/// that only the per-pixel routine handles).
+#[test]
+fn every_route_on_every_format_agrees_with_the_per_pixel_routine() {
+    use GLES_CM::core::{ColorFormat, DepthFormat, TargetFormat};
+    let formats = [
+        ColorFormat::Rgba8888,
+        ColorFormat::Rgb888,
+        ColorFormat::Rgb565,
+        ColorFormat::Rgba4444,
+        ColorFormat::Rgba5551,
+    ];
+    let always = |s: &mut RenderState| {
+        s.alpha_test = Some(AlphaTest {
+            func: CompareFunc::Always,
+            reference: 0.5,
+        })
+    };
+    // Translucent colors, so blending reads and writes every channel (alpha included).
+    let translucent = |mut m: Mesh| {
+        for c in m.col.iter_mut().flat_map(|c| c.chunks_exact_mut(16)) {
+            let a = f32::from_ne_bytes([c[0], c[1], c[2], c[3]]) * 0.6 + 0.2;
+            c[12..16].copy_from_slice(&a.to_ne_bytes());
+        }
+        m
+    };
+    let blend = Blend::func(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha);
+    let smooth = scenes::perspective_state(W, H, Quality::Nicest);
+    let floor = |min, mag| scenes::floor_state(W, H, min, mag, Quality::Nicest);
+    /// A route's name, its state and the mesh drawn with it.
+    type Route = (String, RenderState, fn() -> Mesh);
+    let mut routes: Vec<Route> = Vec::new();
+    for depth in [false, true] {
+        for blending in [false, true] {
+            let setup = |mut s: RenderState| {
+                if !depth {
+                    s.depth_test = None;
+                }
+                s.blend = blending.then_some(blend);
+                s
+            };
+            let how = format!("depth {depth}, blend {blending}");
+            routes.push((format!("smooth, {how}"), setup(smooth.clone()), || {
+                scenes::smooth_triangles(40, 11)
+            }));
+            let mut flat = setup(smooth.clone());
+            flat.shade_model = GLES_CM::core::state::ShadeModel::Flat;
+            routes.push((format!("flat, {how}"), flat, || {
+                scenes::smooth_triangles(40, 12)
+            }));
+            let mut fogged = setup(smooth.clone());
+            fogged.fog = Some(Fog {
+                mode: FogMode::Linear,
+                density: 1.0,
+                start: 2.0,
+                end: 14.0,
+                color: [0.9, 0.3, 0.6, 0.5],
+                quality: Quality::Nicest,
+            });
+            routes.push((format!("fog only, {how}"), fogged, || {
+                scenes::smooth_triangles(40, 13)
+            }));
+            for (min, mag) in [
+                (MinFilter::Nearest, MagFilter::Nearest),
+                (MinFilter::Linear, MagFilter::Linear),
+                (MinFilter::LinearMipmapLinear, MagFilter::Linear),
+                (MinFilter::LinearMipmapNearest, MagFilter::Nearest),
+            ] {
+                routes.push((
+                    format!("{min:?}/{mag:?}, {how}"),
+                    setup(floor(min, mag)),
+                    scenes::floor,
+                ));
+            }
+            let mut two = setup(floor(MinFilter::Linear, MagFilter::Linear));
+            two.textures[1] = two.textures[0].clone();
+            routes.push((format!("two units, {how}"), two, scenes::floor));
+        }
+    }
+    for format in formats {
+        for dither in [false, true] {
+            let target = || {
+                let mut t = Target::new(
+                    W,
+                    H,
+                    TargetFormat {
+                        color: format,
+                        depth: Some(DepthFormat::D24),
+                        stencil_bits: 8,
+                    },
+                );
+                t.clear_color(t.bounds(), [0.31, 0.52, 0.73, 0.44], [true; 4]);
+                t.clear_depth(t.bounds(), 1.0);
+                t
+            };
+            for (what, state, mesh) in &routes {
+                let mut s = state.clone();
+                s.dither = dither;
+                let parts = [(s, translucent(mesh()))];
+                let mut base = target();
+                render_with(&parts, &mut base, 2, &|_| {});
+                assert!(
+                    base.color().iter().any(|&c| c != base.color()[0]),
+                    "{what} {format:?}: empty image"
+                );
+                let mut got = target();
+                render_with(&parts, &mut got, 2, &always);
+                let name = format!("{what}, {format:?}, dither {dither}");
+                if let Some(d) = first_diff(base.color(), got.color()) {
+                    panic!("{name}: color differs at {d}");
+                }
+                if let Some(d) = first_diff(base.depth(), got.depth()) {
+                    panic!("{name}: depth differs at {d}");
+                }
+            }
+        }
+    }
+}

@@ -4,10 +4,10 @@
 //! every primitive's pixels to the scissor box.
 //!
 //! A [`FragmentKey`] is derived from the state once per draw call. It picks a span routine:
-//! the common keys (no alpha test, stencil, logic op or dither) run a routine specialized at
-//! compile time on whether depth is tested, whether color is interpolated and whether it is
-//! blended, so a disabled feature costs nothing per pixel; every other key runs the general
-//! routine, which tests each feature per pixel.
+//! the common keys (no alpha test, stencil or logic op; any color format, dithered or not)
+//! run a routine specialized at compile time on whether depth is tested, whether color is
+//! interpolated and whether it is blended, so a disabled feature costs nothing per pixel;
+//! every other key runs the general routine, which tests each feature per pixel.
 //!
 //! Multisample operations (`GL_SAMPLE_COVERAGE`, `GL_SAMPLE_ALPHA_TO_COVERAGE`,
 //! `GL_SAMPLE_ALPHA_TO_ONE`) are skipped: every config has `EGL_SAMPLE_BUFFERS` 0, and the
@@ -35,14 +35,14 @@ enum Route {
     /// Nothing reaches the color buffer and no test can change depth or stencil (so
     /// coverage, which only changes alpha, cannot matter either).
     Nothing,
-    /// `Simple<DEPTH, SMOOTH, BLEND>`: no alpha test, stencil, logic op or dither.
+    /// `Simple<DEPTH, SMOOTH, BLEND>`: no alpha test, stencil or logic op.
     Simple {
         depth: bool,
         smooth: bool,
         blend: bool,
     },
     /// `textured<TEX, DEPTH, BLEND>`: texture units (any environment, no cube maps) and
-    /// fog, no alpha test, stencil, logic op or dither. `filter` is the first unit's `F_*`
+    /// fog, no alpha test, stencil or logic op. `filter` is the first unit's `F_*`
     /// class (`F_NONE`: fog only).
     Textured {
         filter: u8,
@@ -434,11 +434,7 @@ impl FragmentKey {
         };
         key.route = if key.stencil.is_none() && keep == u32::MAX && !key.depth_write {
             Route::Nothing
-        } else if key.alpha.is_some()
-            || key.stencil.is_some()
-            || key.logic_op.is_some()
-            || key.dither
-        {
+        } else if key.alpha.is_some() || key.stencil.is_some() || key.logic_op.is_some() {
             Route::General
         } else if let Some(stage) = &key.tex {
             // Cube maps run the general routine.
@@ -811,14 +807,19 @@ fn blend(b: &Blend, src: [f32; 4], dst: [f32; 4]) -> [f32; 4] {
     out
 }
 
+/// The 4×4 ordered-dither (Bayer) matrix, by y and x mod 4.
+const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
+
 /// A 4×4 ordered-dither threshold for pixel (x, y), in (0, 1).
+#[inline(always)]
 fn dither_threshold(x: i32, y: i32) -> f32 {
-    const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
     (BAYER[(y & 3) as usize][(x & 3) as usize] as f32 + 0.5) / 16.0
 }
 
 /// Quantizes with ordered dithering: `floor(c · (2ⁿ − 1) + t)` picks one of the two nearest
-/// representable values, and a value that is already representable stays itself.
+/// representable values, and a value that is already representable stays itself. Inlined,
+/// so `floor` takes the calling span routine's instruction set (a libm call otherwise).
+#[inline(always)]
 fn encode_dithered(format: ColorFormat, rgba: [f32; 4], x: i32, y: i32) -> u32 {
     let bits = format.bits();
     let t = dither_threshold(x, y);

@@ -127,6 +127,7 @@ api! {
     eglDestroySurface: fn(EGLDisplay, EGLSurface) -> EGLBoolean;
     eglDestroyContext: fn(EGLDisplay, EGLContext) -> EGLBoolean;
     eglGetError: fn() -> EGLint;
+    eglGetProcAddress: fn(*const std::ffi::c_char) -> *mut c_void;
     glGetString: fn(GLenum) -> *const GLubyte;
     glGetError: fn() -> GLenum;
     glViewport: fn(GLint, GLint, GLsizei, GLsizei);
@@ -173,10 +174,12 @@ api! {
     glBindBuffer: fn(GLenum, GLuint);
     glBufferData: fn(GLenum, GLsizeiptr, *const GLvoid, GLenum);
     glDrawElements: fn(GLenum, GLsizei, GLenum, *const GLvoid);
+    glFrontFace: fn(GLenum);
+    glTexParameteriv: fn(GLenum, GLenum, *const GLint);
 }
 
-/// An initialized display with a `width` × `height` RGBA8888 + depth 24 pbuffer and a
-/// current ES 1.x context.
+/// An initialized display with a `width` × `height` pbuffer (RGBA8888 + depth 24, or
+/// RGB565 + depth 16) and a current ES 1.x context.
 pub struct Egl {
     display: *mut std::ffi::c_void,
     surface: *mut std::ffi::c_void,
@@ -184,7 +187,19 @@ pub struct Egl {
 }
 
 impl Egl {
+    // `accuracy` calls this, `bench` the general form.
+    #[allow(dead_code)]
     pub fn new(gl: &Api, width: u32, height: u32) -> Result<Egl, String> {
+        Egl::with_config(gl, width, height, false)
+    }
+
+    /// [`Egl::new`] with an RGB565 + depth 16 pbuffer when `rgb565`.
+    pub fn with_config(gl: &Api, width: u32, height: u32, rgb565: bool) -> Result<Egl, String> {
+        let (rgba, depth): ([EGLint; 4], EGLint) = if rgb565 {
+            ([5, 6, 5, 0], 16)
+        } else {
+            ([8, 8, 8, 8], 24)
+        };
         // SAFETY: every pointer passed is valid for the call: attribute lists end in
         // EGL_NONE, `configs` has room for the `configs.len()` entries announced, the out
         // parameters point at live locals. Handles come from the same display.
@@ -204,15 +219,15 @@ impl Egl {
                 EGL_RENDERABLE_TYPE,
                 EGL_OPENGL_ES_BIT,
                 EGL_RED_SIZE,
-                8,
+                rgba[0],
                 EGL_GREEN_SIZE,
-                8,
+                rgba[1],
                 EGL_BLUE_SIZE,
-                8,
+                rgba[2],
                 EGL_ALPHA_SIZE,
-                8,
+                rgba[3],
                 EGL_DEPTH_SIZE,
-                24,
+                depth,
                 EGL_NONE,
             ];
             let mut configs: Vec<EGLConfig> = vec![null_mut(); 256];
@@ -240,11 +255,12 @@ impl Egl {
                 .filter(|&c| {
                     [EGL_RED_SIZE, EGL_GREEN_SIZE, EGL_BLUE_SIZE, EGL_ALPHA_SIZE]
                         .iter()
-                        .all(|&a| attr(c, a) == 8)
-                        && attr(c, EGL_DEPTH_SIZE) == 24
+                        .zip(rgba)
+                        .all(|(&a, bits)| attr(c, a) == bits)
+                        && attr(c, EGL_DEPTH_SIZE) == depth
                 })
                 .min_by_key(|&c| attr(c, EGL_STENCIL_SIZE))
-                .ok_or("no RGBA8888 / depth 24 pbuffer config")?;
+                .ok_or_else(|| format!("no pbuffer config of color {rgba:?} and depth {depth}"))?;
             let size = [
                 EGL_WIDTH,
                 width as EGLint,

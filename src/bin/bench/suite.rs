@@ -13,7 +13,7 @@
 use std::sync::Arc;
 
 use glam::{DMat3, DVec3, DVec4, Mat4, Vec3};
-use GLES_CM::core::state::{Blend, BlendFactor, Quality, ShadeModel};
+use GLES_CM::core::state::{Blend, BlendFactor, CullFace, Quality, ShadeModel, Winding};
 use GLES_CM::core::texenv::{
     Combine, CombineFunc, EnvMode, Fog, FogMode, Operand, Source, TexEnv, TextureUnit,
 };
@@ -25,8 +25,9 @@ use GLES_CM::core::{
 use GLES_CM::gles::tokens::{GL_DONT_CARE, GL_FASTEST, GL_NICEST};
 use GLES_CM::gles::types::GLenum;
 
-/// The GL scenes, in table order: the main ones, then those only the scaling table uses.
-pub const NAMES: [&str; 19] = [
+/// The GL scenes, in table order: the main ones, the app-class ones (each at RGB565 with
+/// dithering, the default state, and at RGBA8888), then those only the scaling table uses.
+pub const NAMES: [&str; 29] = [
     "clear-640",
     "flat-640",
     "smooth-640",
@@ -40,6 +41,16 @@ pub const NAMES: [&str; 19] = [
     "demo",
     "multitexture",
     "sprites",
+    "flythrough-565",
+    "flythrough-8888",
+    "gears-300-565",
+    "gears-300-8888",
+    "gears-1280-565",
+    "gears-1280-8888",
+    "ui-2d-565",
+    "ui-2d-8888",
+    "draws-10k-565",
+    "draws-10k-8888",
     "smooth-320",
     "lit-offscreen",
     "tris-1k",
@@ -103,6 +114,8 @@ pub struct Attr {
     pub data: Vec<u8>,
     pub ty: ComponentType,
     pub size: usize,
+    /// Integer components read as fractions of their maximum (colors always are in GL).
+    pub normalized: bool,
 }
 
 impl Attr {
@@ -111,6 +124,17 @@ impl Attr {
             data: v.iter().flat_map(|x| x.to_ne_bytes()).collect(),
             ty: ComponentType::Float,
             size,
+            normalized: false,
+        }
+    }
+
+    /// Unsigned bytes, normalized: what colors in `GL_UNSIGNED_BYTE` are.
+    fn ubyte(v: &[u8], size: usize) -> Attr {
+        Attr {
+            data: v.to_vec(),
+            ty: ComponentType::UnsignedByte,
+            size,
+            normalized: true,
         }
     }
 
@@ -123,6 +147,7 @@ impl Attr {
                 .collect(),
             ty: ComponentType::Fixed,
             size,
+            normalized: false,
         }
     }
 
@@ -136,7 +161,7 @@ impl Attr {
             ty: self.ty,
             size: self.size,
             stride: self.stride(),
-            normalized: false,
+            normalized: self.normalized,
         }
     }
 }
@@ -190,10 +215,12 @@ impl Tex {
     }
 }
 
-/// One directional light, set in eye coordinates (the modelview is the identity then).
+/// One directional or positional light, set in eye coordinates (the modelview is the
+/// identity then); no attenuation, no spot.
 pub struct DirLight {
-    /// Towards the light.
+    /// Towards the light (directional), or where it is (`point`).
     pub direction: [f32; 3],
+    pub point: bool,
     pub ambient: [f32; 4],
     pub diffuse: [f32; 4],
     pub specular: [f32; 4],
@@ -222,6 +249,9 @@ pub enum Cap {
     Fog,
     Lighting,
     PointSprite,
+    /// Back faces culled.
+    CullFace,
+    Normalize,
 }
 
 /// One state change or draw, in GL order.
@@ -254,6 +284,15 @@ pub enum Op {
         offset: usize,
         count: usize,
     },
+    FrontFace(Winding),
+    /// `glBindTexture` of texture `tex` on unit 0, its environment unchanged.
+    Bind(usize),
+    /// `glDrawTexfOES(x, y, 0, w, h)` of the texture bound on unit 0, after setting its
+    /// crop rectangle (texels: x, y, width, height).
+    DrawTex {
+        rect: [f32; 4],
+        crop: [i32; 4],
+    },
 }
 
 /// What the throughput column counts.
@@ -262,6 +301,8 @@ pub enum Unit {
     Pixels,
     Triangles,
     Points,
+    /// Draw calls: shown as ns per draw.
+    Draws,
 }
 
 /// Which rows a scene gets.
@@ -278,6 +319,10 @@ pub struct Scene {
     pub class: Class,
     pub width: u32,
     pub height: u32,
+    /// The pbuffer's color format: RGBA8888 with depth 24, or RGB565 with depth 16.
+    pub format: ColorFormat,
+    /// `GL_DITHER` left at its default (enabled) rather than disabled.
+    pub dither: bool,
     /// Per frame: what the throughput counts, and the vertices the vertex stage sees (for
     /// ns per vertex) and pixels written (for ns per pixel).
     pub unit: Unit,
@@ -323,6 +368,16 @@ impl Scene {
             "tris-10k" => small_triangles(10_000),
             "tris-100k" => small_triangles(100_000),
             "tris-1m" => small_triangles(1_000_000),
+            "flythrough-565" => flythrough(ColorFormat::Rgb565),
+            "flythrough-8888" => flythrough(ColorFormat::Rgba8888),
+            "gears-300-565" => gears(300, 300, ColorFormat::Rgb565),
+            "gears-300-8888" => gears(300, 300, ColorFormat::Rgba8888),
+            "gears-1280-565" => gears(1280, 960, ColorFormat::Rgb565),
+            "gears-1280-8888" => gears(1280, 960, ColorFormat::Rgba8888),
+            "ui-2d-565" => ui_2d(ColorFormat::Rgb565),
+            "ui-2d-8888" => ui_2d(ColorFormat::Rgba8888),
+            "draws-10k-565" => draws(ColorFormat::Rgb565),
+            "draws-10k-8888" => draws(ColorFormat::Rgba8888),
             _ => return None,
         })
     }
@@ -333,11 +388,25 @@ impl Scene {
             Unit::Pixels => format!("{rate:.0} Mpix/s"),
             Unit::Triangles => format!("{rate:.2} Mtris/s"),
             Unit::Points => format!("{rate:.2} Mpts/s"),
+            Unit::Draws => format!("{:.0} ns/draw", seconds * 1e9 / self.work),
         }
     }
 
+    /// The reference's target: exact 8-bit channels, without alpha when the pbuffer has
+    /// none (RGB565), so alpha read back as 1 is not counted as error.
     pub fn target(&self) -> Target {
-        target(self.width, self.height)
+        let mut t = target(self.width, self.height);
+        if self.format == ColorFormat::Rgb565 {
+            t = Target::new(
+                self.width,
+                self.height,
+                TargetFormat {
+                    color: ColorFormat::Rgb888,
+                    ..t.format()
+                },
+            );
+        }
+        t
     }
 
     /// The reference image: the cleared target, then the setup and one frame through the
@@ -352,6 +421,7 @@ impl Scene {
         let samplers: Vec<Arc<Sampler>> = self.textures.iter().map(Tex::sampler).collect();
         let mut blend = Blend::func(BlendFactor::One, BlendFactor::Zero);
         let (mut blending, mut lighting, mut color_array) = (false, false, self.color.is_some());
+        let mut normalize = false;
         let mut current = [1.0f32; 4];
         for op in self.setup.iter().chain(&self.frame) {
             match op {
@@ -375,7 +445,19 @@ impl Scene {
                     }
                     Cap::Lighting => lighting = *on,
                     Cap::PointSprite => rs.point_sprite = *on,
+                    Cap::CullFace => rs.cull = on.then_some(CullFace::Back),
+                    Cap::Normalize => normalize = *on,
                 },
+                Op::FrontFace(w) => rs.front_face = *w,
+                Op::Bind(i) => {
+                    if let Some(u) = &mut rs.textures[0] {
+                        u.sampler = samplers[*i].clone();
+                    }
+                }
+                Op::DrawTex { rect, crop } => {
+                    rs.blend = blending.then_some(blend);
+                    self.reference_draw_tex(&rs, *rect, *crop, current, &mut t);
+                }
                 Op::BlendFunc(s, d) => blend = Blend::func(*s, *d),
                 Op::Shade(m) => rs.shade_model = *m,
                 Op::Projection(m) => rs.projection = *m,
@@ -401,7 +483,8 @@ impl Scene {
                         first: *first,
                         count: *count,
                     };
-                    self.reference_draw(&rs, *prim, ix, lighting, color_array, current, &mut t);
+                    let lit = lighting.then_some(normalize);
+                    self.reference_draw(&rs, *prim, ix, lit, color_array, current, &mut t);
                 }
                 Op::DrawIndexed {
                     prim,
@@ -410,20 +493,22 @@ impl Scene {
                 } => {
                     rs.blend = blending.then_some(blend);
                     let ix = Indices::U16(&self.indices[*offset..*offset + *count]);
-                    self.reference_draw(&rs, *prim, ix, lighting, color_array, current, &mut t);
+                    let lit = lighting.then_some(normalize);
+                    self.reference_draw(&rs, *prim, ix, lit, color_array, current, &mut t);
                 }
             }
         }
         t
     }
 
+    /// `lighting`: `Some(normalize)` when lit.
     #[allow(clippy::too_many_arguments)]
     fn reference_draw(
         &self,
         rs: &RenderState,
         prim: Primitive,
         ix: Indices<'_>,
-        lighting: bool,
+        lighting: Option<bool>,
         color_array: bool,
         current: [f32; 4],
         t: &mut Target,
@@ -434,7 +519,7 @@ impl Scene {
             None => current,
         };
         // Lit colors for the vertices this draw reads (the others stay unused).
-        let lit: Option<Attr> = lighting.then(|| {
+        let lit: Option<Attr> = lighting.map(|normalize| {
             let setup = self.lighting.as_ref().expect("a lit scene has LightSetup");
             let normals = self.normal.as_ref().expect("a lit scene has normals");
             let n = self.position.data.len() / self.position.stride();
@@ -444,8 +529,10 @@ impl Scene {
                 let c = light_vertex(
                     setup,
                     &rs.modelview,
+                    self.position.array().fetch(i),
                     normals.array().fetch(i),
                     base_color(i),
+                    normalize,
                 );
                 out[i * 4..i * 4 + 4].copy_from_slice(&c);
             }
@@ -471,16 +558,83 @@ impl Scene {
     }
 }
 
-/// The lit color (clamped) of a vertex with object normal `n` and color-material color `c`
-/// under `mv`, for directional lights: ES 1.1 §2.12.1 with attenuation and spot factors 1.
-fn light_vertex(setup: &LightSetup, mv: &Mat4, n: [f32; 4], c: [f32; 4]) -> [f32; 4] {
+impl Scene {
+    /// `glDrawTexOES` for the reference: the screen rectangle as two triangles through a
+    /// pixel-space projection with the current color, the crop rectangle's texture
+    /// coordinates at its corners (OES_draw_texture: affine in window x and y), no lighting,
+    /// culling or depth test.
+    fn reference_draw_tex(
+        &self,
+        rs: &RenderState,
+        [x, y, w, h]: [f32; 4],
+        [cx, cy, cw, ch]: [i32; 4],
+        current: [f32; 4],
+        t: &mut Target,
+    ) {
+        let Some(unit) = &rs.textures[0] else {
+            return;
+        };
+        let base = &unit.sampler.levels[0];
+        let (tw, th) = (base.width as f32, base.height as f32);
+        let (s0, s1) = (cx as f32 / tw, (cx + cw) as f32 / tw);
+        let (t0, t1) = (cy as f32 / th, (cy + ch) as f32 / th);
+        let corners = [
+            (x, y, s0, t0),
+            (x + w, y, s1, t0),
+            (x + w, y + h, s1, t1),
+            (x, y, s0, t0),
+            (x + w, y + h, s1, t1),
+            (x, y + h, s0, t1),
+        ];
+        let (mut pos, mut tc) = (Vec::new(), Vec::new());
+        for (px, py, s, tt) in corners {
+            pos.extend([px, py, 0.0]);
+            tc.extend([s, tt]);
+        }
+        let (pos, tc) = (Attr::float(&pos, 3), Attr::float(&tc, 2));
+        let mut call = DrawCall::new(
+            Primitive::Triangles,
+            Indices::Range { first: 0, count: 6 },
+            pos.array(),
+        );
+        call.color = AttribSource::Constant(current);
+        call.texcoord[0] = AttribSource::Array(tc.array());
+        let mut qs = rs.clone();
+        qs.cull = None;
+        qs.depth_test = None;
+        qs.modelview = Mat4::IDENTITY;
+        qs.projection = pixel_ortho(self.width, self.height);
+        for u in qs.textures.iter_mut().skip(1) {
+            *u = None;
+        }
+        GLES_CM::core::reference::render(&qs, &call, t);
+    }
+}
+
+/// The lit color (clamped) of a vertex at object position `p` with object normal `n` and
+/// color-material color `c` under `mv` (`normalize`: `GL_NORMALIZE`): ES 1.1 §2.12.1 with
+/// attenuation and spot factors 1 and a viewer at infinity.
+fn light_vertex(
+    setup: &LightSetup,
+    mv: &Mat4,
+    p: [f32; 4],
+    n: [f32; 4],
+    c: [f32; 4],
+    normalize: bool,
+) -> [f32; 4] {
     let m = DMat3::from_mat4(mv.as_dmat4()).inverse().transpose();
-    let n = m * DVec3::new(n[0] as f64, n[1] as f64, n[2] as f64);
+    let mut n = m * DVec3::new(n[0] as f64, n[1] as f64, n[2] as f64);
+    if normalize {
+        n = n.normalize_or_zero();
+    }
+    let eye = mv.as_dmat4() * DVec4::from_array(p.map(f64::from));
+    let eye = eye.truncate() / eye.w;
     let c4 = DVec4::from_array(c.map(f64::from));
     let v4 = |a: [f32; 4]| DVec4::from_array(a.map(f64::from));
     let mut sum = c4 * v4(setup.model_ambient);
     for l in &setup.lights {
-        let vp = DVec3::from_array(l.direction.map(f64::from)).normalize();
+        let to = DVec3::from_array(l.direction.map(f64::from));
+        let vp = if l.point { to - eye } else { to }.normalize();
         let h = (vp + DVec3::Z).normalize();
         let ndotvp = n.dot(vp).max(0.0);
         sum += c4 * v4(l.ambient) + c4 * v4(l.diffuse) * ndotvp;
@@ -673,6 +827,8 @@ fn fill(kind: Fill, w: u32, h: u32, class: Class) -> Scene {
         class,
         width: w,
         height: h,
+        format: ColorFormat::Rgba8888,
+        dither: false,
         unit: Unit::Pixels,
         work: pixels,
         vertices: (layers * 6) as f64,
@@ -697,12 +853,14 @@ fn two_lights() -> LightSetup {
         lights: vec![
             DirLight {
                 direction: [0.5, 0.8, 0.6],
+                point: false,
                 ambient: [0.1, 0.1, 0.1, 1.0],
                 diffuse: [0.8, 0.8, 0.75, 1.0],
                 specular: [0.6, 0.6, 0.6, 1.0],
             },
             DirLight {
                 direction: [-0.7, -0.2, 0.4],
+                point: false,
                 ambient: [0.0, 0.0, 0.0, 1.0],
                 diffuse: [0.25, 0.3, 0.45, 1.0],
                 specular: [0.0, 0.0, 0.0, 1.0],
@@ -809,6 +967,8 @@ fn lit(indexed: bool, offscreen: bool) -> Scene {
         },
         width: w,
         height: h,
+        format: ColorFormat::Rgba8888,
+        dither: false,
         unit: Unit::Triangles,
         work: tris as f64,
         vertices,
@@ -953,6 +1113,8 @@ fn demo() -> Scene {
         class: Class::Main,
         width: w,
         height: h,
+        format: ColorFormat::Rgba8888,
+        dither: false,
         unit: Unit::Triangles,
         work: tris as f64,
         vertices: (ground + OBJECTS * 36) as f64,
@@ -1085,6 +1247,8 @@ fn multitexture() -> Scene {
         class: Class::Main,
         width: w,
         height: h,
+        format: ColorFormat::Rgba8888,
+        dither: false,
         unit: Unit::Pixels,
         work: (w * h) as f64,
         vertices: count as f64,
@@ -1185,6 +1349,8 @@ fn sprites() -> Scene {
         class: Class::Main,
         width: w,
         height: h,
+        format: ColorFormat::Rgba8888,
+        dither: false,
         unit: Unit::Points,
         work: count as f64,
         vertices: count as f64,
@@ -1240,6 +1406,8 @@ fn small_triangles(n: usize) -> Scene {
         class: Class::Scaling,
         width: w,
         height: h,
+        format: ColorFormat::Rgba8888,
+        dither: false,
         unit: Unit::Triangles,
         work: n as f64,
         vertices: (n * 3) as f64,
@@ -1264,5 +1432,632 @@ fn small_triangles(n: usize) -> Scene {
             first: 0,
             count: n * 3,
         }],
+    }
+}
+
+/// Vertex arrays built up draw by draw: positions, normals, colors (bytes), texture
+/// coordinates, one entry per vertex in each.
+#[derive(Default)]
+struct Arrays {
+    pos: Vec<f32>,
+    nrm: Vec<f32>,
+    col: Vec<u8>,
+    tc: Vec<f32>,
+}
+
+impl Arrays {
+    fn len(&self) -> usize {
+        self.pos.len() / 3
+    }
+
+    fn push(&mut self, p: Vec3, n: Vec3, c: [u8; 4], st: [f32; 2]) {
+        self.pos.extend(p.to_array());
+        self.nrm.extend(n.to_array());
+        self.col.extend(c);
+        self.tc.extend(st);
+    }
+
+    /// A triangle with its face normal at every vertex (flat-shaded models carry these).
+    fn face(&mut self, [a, b, c]: [Vec3; 3], color: [u8; 4]) {
+        let n = (b - a).cross(c - a).normalize_or_zero();
+        for p in [a, b, c] {
+            self.push(p, n, color, [0.0; 2]);
+        }
+    }
+
+    /// An axis-aligned rectangle as two counter-clockwise triangles at z = 0.
+    fn rect(&mut self, [x0, y0, x1, y1]: [f32; 4], st: [f32; 4]) -> (usize, usize) {
+        let first = self.len();
+        let corners = [
+            (x0, y0, st[0], st[1]),
+            (x1, y0, st[2], st[1]),
+            (x1, y1, st[2], st[3]),
+            (x0, y0, st[0], st[1]),
+            (x1, y1, st[2], st[3]),
+            (x0, y1, st[0], st[3]),
+        ];
+        for (x, y, s, t) in corners {
+            self.push(Vec3::new(x, y, 0.0), Vec3::Z, [255; 4], [s, t]);
+        }
+        (first, 6)
+    }
+}
+
+fn bits_name(format: ColorFormat) -> &'static str {
+    if format == ColorFormat::Rgb565 {
+        "RGB565 + depth 16, dither on (the default)"
+    } else {
+        "RGBA8888 + depth 24, dither on (the default; no effect at 8 bits)"
+    }
+}
+
+fn draw(first: usize, count: usize) -> Op {
+    Op::Draw {
+        prim: Primitive::Triangles,
+        first,
+        count,
+    }
+}
+
+/// The classic GLES 1.x flythrough demo frame of issue 20: a few dozen flat-shaded objects
+/// (200 to 2 000 triangles each, each its own `glDrawArrays` under its own modelview, scaled
+/// unevenly so `GL_NORMALIZE` matters) lit by three directional lights with color
+/// material; `GL_FIXED` positions and normals, `GL_UNSIGNED_BYTE` colors; first their
+/// reflection (mirrored modelview, front face CW, blended), then a translucent floor over
+/// it, then the objects, then two full-screen alpha-blended fade quads.
+fn flythrough(format: ColorFormat) -> Scene {
+    const OBJECTS: usize = 24;
+    let (w, h) = (640, 480);
+    let mut rng = Lcg(1997);
+    let mut a = Arrays::default();
+    // The floor, y = 0, translucent so the reflection shows through.
+    let floor_first = a.len();
+    let (fx, fz) = (16.0f32, 48.0f32);
+    let grid = 8;
+    for j in 0..grid {
+        for i in 0..grid {
+            let x0 = -fx + 2.0 * fx * i as f32 / grid as f32;
+            let x1 = x0 + 2.0 * fx / grid as f32;
+            let z0 = -fz * j as f32 / grid as f32;
+            let z1 = z0 - fz / grid as f32;
+            let c = if (i + j) % 2 == 0 {
+                [70, 90, 120, 150]
+            } else {
+                [150, 150, 140, 150]
+            };
+            let (p00, p10) = (Vec3::new(x0, 0.0, z0), Vec3::new(x1, 0.0, z0));
+            let (p01, p11) = (Vec3::new(x0, 0.0, z1), Vec3::new(x1, 0.0, z1));
+            a.face([p00, p10, p11], c);
+            a.face([p00, p11, p01], c);
+        }
+    }
+    let floor_count = a.len() - floor_first;
+    // The objects: bumpy closed surfaces of `slices` × `stacks` quads.
+    let mut objects = Vec::new();
+    let mut tris = 0;
+    for k in 0..OBJECTS {
+        let slices = 10 + (rng.next() * 30.0) as usize;
+        let stacks = 5 + (rng.next() * 20.0) as usize;
+        let (f1, f2, ph) = (
+            2.0 + (rng.next() * 4.0).floor(),
+            1.0 + (rng.next() * 3.0).floor(),
+            rng.next() * 6.0,
+        );
+        let base = [
+            60 + (rng.next() * 195.0) as u8,
+            60 + (rng.next() * 195.0) as u8,
+            60 + (rng.next() * 195.0) as u8,
+            170,
+        ];
+        let at = |i: usize, j: usize| {
+            let phi = std::f32::consts::TAU * i as f32 / slices as f32;
+            let theta = std::f32::consts::PI * j as f32 / stacks as f32;
+            let r = 1.0 + 0.2 * (phi * f1 + ph).sin() * (theta * f2).sin();
+            Vec3::new(
+                r * theta.sin() * phi.cos(),
+                r * theta.cos(),
+                r * theta.sin() * phi.sin(),
+            )
+        };
+        let first = a.len();
+        for j in 0..stacks {
+            for i in 0..slices {
+                let (p00, p10) = (at(i, j), at(i + 1, j));
+                let (p01, p11) = (at(i, j + 1), at(i + 1, j + 1));
+                let shade = (i * 7 + j * 3) % 5 * 8;
+                let c = [
+                    base[0].saturating_sub(shade as u8),
+                    base[1].saturating_sub(shade as u8),
+                    base[2],
+                    base[3],
+                ];
+                // Outward-facing, counter-clockwise seen from outside.
+                if j > 0 {
+                    a.face([p00, p10, p11], c);
+                    tris += 1;
+                }
+                if j + 1 < stacks {
+                    a.face([p00, p11, p01], c);
+                    tris += 1;
+                }
+            }
+        }
+        let scale = Vec3::new(
+            0.5 + rng.next() * 1.1,
+            0.5 + rng.next() * 1.3,
+            0.5 + rng.next() * 1.1,
+        );
+        let side = if k % 2 == 0 { -1.0 } else { 1.0 };
+        let pos = Vec3::new(
+            side * (2.0 + rng.next() * 9.0),
+            scale.y + 0.05 + rng.next() * 0.5,
+            -3.0 - 44.0 * (k as f32 + rng.next()) / OBJECTS as f32,
+        );
+        let model = Mat4::from_translation(pos)
+            * Mat4::from_rotation_y(rng.next() * std::f32::consts::TAU)
+            * Mat4::from_rotation_x(rng.next() * 0.5)
+            * Mat4::from_scale(scale);
+        objects.push((model, first, a.len() - first));
+    }
+    // Full-screen fade quads in a unit orthographic projection.
+    let fade = a.rect([0.0, 0.0, 1.0, 1.0], [0.0; 4]);
+    let view = Mat4::look_at_rh(
+        Vec3::new(1.0, 2.6, 4.0),
+        Vec3::new(-1.0, 1.2, -24.0),
+        Vec3::new(0.05, 1.0, 0.0),
+    );
+    let mirror = Mat4::from_scale(Vec3::new(1.0, -1.0, 1.0));
+    let projection = Mat4::perspective_rh_gl(1.0, w as f32 / h as f32, 0.5, 80.0);
+    let mut frame = vec![
+        Op::Projection(projection),
+        Op::Enable(Cap::DepthTest, true),
+        Op::Enable(Cap::CullFace, true),
+        Op::Enable(Cap::Lighting, true),
+        Op::ColorArray(true),
+        // The reflection: winding flips under the mirror, so the front face does too.
+        Op::FrontFace(Winding::Cw),
+        Op::Enable(Cap::Blend, true),
+    ];
+    for &(model, first, count) in &objects {
+        frame.push(Op::Modelview(view * mirror * model));
+        frame.push(draw(first, count));
+    }
+    frame.extend([
+        Op::FrontFace(Winding::Ccw),
+        Op::Modelview(view),
+        draw(floor_first, floor_count),
+        Op::Enable(Cap::Blend, false),
+    ]);
+    for &(model, first, count) in &objects {
+        frame.push(Op::Modelview(view * model));
+        frame.push(draw(first, count));
+    }
+    frame.extend([
+        Op::Enable(Cap::Lighting, false),
+        Op::Enable(Cap::DepthTest, false),
+        Op::ColorArray(false),
+        Op::Projection(Mat4::orthographic_rh_gl(0.0, 1.0, 0.0, 1.0, -1.0, 1.0)),
+        Op::Modelview(Mat4::IDENTITY),
+        Op::Enable(Cap::Blend, true),
+        Op::Color([0.05, 0.05, 0.15, 0.3]),
+        draw(fade.0, fade.1),
+        Op::Color([1.0, 0.85, 0.6, 0.12]),
+        draw(fade.0, fade.1),
+        Op::Enable(Cap::Blend, false),
+    ]);
+    let tris = 2 * tris + floor_count / 3 + 4;
+    let draws = 2 * OBJECTS + 3;
+    Scene {
+        summary: format!(
+            "flythrough (issue 20's demo): {OBJECTS} flat-shaded objects (200-2000 triangles, \
+             own modelview and glDrawArrays each), 3 directional lights, color material, \
+             GL_NORMALIZE, GL_FIXED positions and normals, GL_UNSIGNED_BYTE colors, back faces \
+             culled; a mirrored blended pass (front face CW), a translucent floor, the objects, \
+             2 full-screen blended fade quads; {}, 640x480; {tris} triangles, {draws} draws \
+             per frame",
+            bits_name(format)
+        ),
+        class: Class::Main,
+        width: w,
+        height: h,
+        format,
+        dither: true,
+        unit: Unit::Triangles,
+        work: tris as f64,
+        vertices: (a.len() * 2) as f64,
+        pixels: (w * h * 4) as f64,
+        clear_color: [0.35, 0.45, 0.6, 1.0],
+        position: Attr::fixed(&a.pos, 3),
+        color: Some(Attr::ubyte(&a.col, 4)),
+        normal: Some(Attr::fixed(&a.nrm, 3)),
+        texcoord: [None, None],
+        indices: Vec::new(),
+        buffers: false,
+        textures: Vec::new(),
+        lighting: Some(LightSetup {
+            lights: vec![
+                DirLight {
+                    direction: [0.4, 0.9, 0.5],
+                    point: false,
+                    ambient: [0.1, 0.1, 0.1, 1.0],
+                    diffuse: [0.7, 0.7, 0.65, 1.0],
+                    specular: [0.0, 0.0, 0.0, 1.0],
+                },
+                DirLight {
+                    direction: [-0.8, 0.3, 0.2],
+                    point: false,
+                    ambient: [0.0, 0.0, 0.0, 1.0],
+                    diffuse: [0.25, 0.3, 0.45, 1.0],
+                    specular: [0.0, 0.0, 0.0, 1.0],
+                },
+                DirLight {
+                    direction: [0.0, -0.5, 1.0],
+                    point: false,
+                    ambient: [0.0, 0.0, 0.0, 1.0],
+                    diffuse: [0.2, 0.15, 0.1, 1.0],
+                    specular: [0.0, 0.0, 0.0, 1.0],
+                },
+            ],
+            model_ambient: [0.2, 0.2, 0.2, 1.0],
+            specular: [0.0, 0.0, 0.0, 1.0],
+            shininess: 0.0,
+        }),
+        fog: None,
+        setup: vec![
+            Op::Shade(ShadeModel::Flat),
+            Op::Enable(Cap::Normalize, true),
+            Op::BlendFunc(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha),
+        ],
+        frame,
+    }
+}
+
+/// One glxgears gear (after Brian Paul's): front and back faces as triangle strips, the
+/// teeth's faces and the outward faces as quads (two triangles each), the inner cylinder
+/// as a strip, with smooth normals there. Returns the draws, in the arrays `a`.
+fn gear(a: &mut Arrays, inner: f32, outer: f32, width: f32, teeth: usize, depth: f32) -> Vec<Op> {
+    let (r0, r1, r2) = (inner, outer - depth / 2.0, outer + depth / 2.0);
+    let da = std::f32::consts::TAU / teeth as f32 / 4.0;
+    let hw = width * 0.5;
+    let ang = |i: usize| i as f32 * std::f32::consts::TAU / teeth as f32;
+    let p = |r: f32, a: f32, z: f32| Vec3::new(r * a.cos(), r * a.sin(), z);
+    let white = [255; 4];
+    let mut ops = Vec::new();
+    let strip = |a: &mut Arrays, pts: Vec<(Vec3, Vec3)>| {
+        let first = a.len();
+        for (v, n) in pts {
+            a.push(v, n, white, [0.0; 2]);
+        }
+        Op::Draw {
+            prim: Primitive::TriangleStrip,
+            first,
+            count: a.len() - first,
+        }
+    };
+    let quads = |a: &mut Arrays, qs: Vec<([Vec3; 4], Vec3)>| {
+        let first = a.len();
+        for (q, n) in qs {
+            for k in [0, 1, 2, 0, 2, 3] {
+                a.push(q[k], n, white, [0.0; 2]);
+            }
+        }
+        draw(first, a.len() - first)
+    };
+    for (z, nz) in [(hw, 1.0f32), (-hw, -1.0)] {
+        let n = Vec3::new(0.0, 0.0, nz);
+        let mut pts = Vec::new();
+        for i in 0..=teeth {
+            let an = ang(i);
+            if nz > 0.0 {
+                pts.push((p(r0, an, z), n));
+                pts.push((p(r1, an, z), n));
+                if i < teeth {
+                    pts.push((p(r0, an, z), n));
+                    pts.push((p(r1, an + 3.0 * da, z), n));
+                }
+            } else {
+                pts.push((p(r1, an, z), n));
+                pts.push((p(r0, an, z), n));
+                if i < teeth {
+                    pts.push((p(r1, an + 3.0 * da, z), n));
+                    pts.push((p(r0, an, z), n));
+                }
+            }
+        }
+        ops.push(strip(a, pts));
+        let qs = (0..teeth)
+            .map(|i| {
+                let an = ang(i);
+                let q = [
+                    p(r1, an, z),
+                    p(r2, an + da, z),
+                    p(r2, an + 2.0 * da, z),
+                    p(r1, an + 3.0 * da, z),
+                ];
+                let q = if nz > 0.0 {
+                    q
+                } else {
+                    [q[3], q[2], q[1], q[0]]
+                };
+                (q, n)
+            })
+            .collect();
+        ops.push(quads(a, qs));
+    }
+    // Outward faces: for each tooth its rising side, top, falling side and the valley.
+    let mut qs = Vec::new();
+    for i in 0..teeth {
+        let an = ang(i);
+        let steps = [
+            (r1, an),
+            (r2, an + da),
+            (r2, an + 2.0 * da),
+            (r1, an + 3.0 * da),
+            (r1, ang(i + 1)),
+        ];
+        for s in steps.windows(2) {
+            let (u, v) = (p(s[0].0, s[0].1, 0.0), p(s[1].0, s[1].1, 0.0));
+            let d = v - u;
+            let n = Vec3::new(d.y, -d.x, 0.0).normalize_or_zero();
+            let q = [
+                Vec3::new(u.x, u.y, hw),
+                Vec3::new(u.x, u.y, -hw),
+                Vec3::new(v.x, v.y, -hw),
+                Vec3::new(v.x, v.y, hw),
+            ];
+            qs.push(([q[0], q[3], q[2], q[1]], n));
+        }
+    }
+    ops.push(quads(a, qs));
+    let mut pts = Vec::new();
+    for i in 0..=teeth {
+        let an = ang(i);
+        let n = Vec3::new(-an.cos(), -an.sin(), 0.0);
+        pts.push((p(r0, an, -hw), n));
+        pts.push((p(r0, an, hw), n));
+    }
+    ops.push(strip(a, pts));
+    ops
+}
+
+/// glxgears-style: three smooth-lit gears (strips and quads, 6 draws each) in their own
+/// colors and matrices, one positional light.
+fn gears(w: u32, h: u32, format: ColorFormat) -> Scene {
+    let mut a = Arrays::default();
+    let g = [
+        (gear(&mut a, 1.0, 4.0, 1.0, 20, 0.7), [0.8, 0.1, 0.0, 1.0]),
+        (gear(&mut a, 0.5, 2.0, 2.0, 10, 0.7), [0.0, 0.8, 0.2, 1.0]),
+        (gear(&mut a, 1.3, 2.0, 0.5, 10, 0.7), [0.2, 0.2, 1.0, 1.0]),
+    ];
+    let angle = 12f32.to_radians();
+    let view = Mat4::from_translation(Vec3::new(0.0, 0.0, -40.0))
+        * Mat4::from_rotation_x(20f32.to_radians())
+        * Mat4::from_rotation_y(30f32.to_radians());
+    let placed = [
+        Mat4::from_translation(Vec3::new(-3.0, -2.0, 0.0)) * Mat4::from_rotation_z(angle),
+        Mat4::from_translation(Vec3::new(3.1, -2.0, 0.0))
+            * Mat4::from_rotation_z(-2.0 * angle - 9f32.to_radians()),
+        Mat4::from_translation(Vec3::new(-3.1, 4.2, 0.0))
+            * Mat4::from_rotation_z(-2.0 * angle - 25f32.to_radians()),
+    ];
+    let mut frame = Vec::new();
+    let mut draws = 0;
+    for ((ops, color), m) in g.into_iter().zip(placed) {
+        frame.push(Op::Modelview(view * m));
+        frame.push(Op::Color(color));
+        draws += ops.len();
+        frame.extend(ops);
+    }
+    let aspect = h as f32 / w as f32;
+    // glFrustum(-1, 1, -aspect, aspect, 5, 60).
+    let fovy = 2.0 * (aspect / 5.0).atan();
+    let tris = a.len() as f64 / 3.0;
+    Scene {
+        summary: format!(
+            "gears (glxgears-like): 3 smooth-lit gears from triangle strips and quads, one \
+             positional light, color material, own modelview and color each, depth test; {}, \
+             {w}x{h}; about {tris:.0} triangles, {draws} draws per frame",
+            bits_name(format)
+        ),
+        class: Class::Main,
+        width: w,
+        height: h,
+        format,
+        dither: true,
+        unit: Unit::Triangles,
+        work: tris,
+        vertices: a.len() as f64,
+        pixels: (w * h) as f64,
+        clear_color: [0.0, 0.0, 0.0, 1.0],
+        position: Attr::float(&a.pos, 3),
+        color: None,
+        normal: Some(Attr::float(&a.nrm, 3)),
+        texcoord: [None, None],
+        indices: Vec::new(),
+        buffers: false,
+        textures: Vec::new(),
+        lighting: Some(LightSetup {
+            lights: vec![DirLight {
+                direction: [5.0, 5.0, 10.0],
+                point: true,
+                ambient: [0.0, 0.0, 0.0, 1.0],
+                diffuse: [1.0, 1.0, 1.0, 1.0],
+                specular: [0.0, 0.0, 0.0, 1.0],
+            }],
+            model_ambient: [0.2, 0.2, 0.2, 1.0],
+            specular: [0.0, 0.0, 0.0, 1.0],
+            shininess: 0.0,
+        }),
+        fog: None,
+        setup: vec![
+            Op::Projection(Mat4::perspective_rh_gl(fovy, 1.0 / aspect, 5.0, 60.0)),
+            Op::Enable(Cap::DepthTest, true),
+            Op::Enable(Cap::Lighting, true),
+            Op::Enable(Cap::Normalize, true),
+            Op::ColorArray(false),
+        ],
+        frame,
+    }
+}
+
+/// A 2D interface frame: 500 small alpha-blended textured items, alternately quads through
+/// `glDrawArrays` and `glDrawTexOES` sprites (a cell of a 64 × 64 atlas), with a texture
+/// bind and a color change before most of them; orthographic, no depth.
+fn ui_2d(format: ColorFormat) -> Scene {
+    const ITEMS: usize = 500;
+    const TEXTURES: usize = 6;
+    let (w, h) = (640, 480);
+    let mut rng = Lcg(2002);
+    let mut a = Arrays::default();
+    let mut frame = Vec::new();
+    let mut pixels = 0.0;
+    let mut bound = usize::MAX;
+    for k in 0..ITEMS {
+        let size = (16.0 + rng.next() * 48.0).floor();
+        let x = (rng.next() * (w as f32 - size)).floor();
+        let y = (rng.next() * (h as f32 - size)).floor();
+        let tex = (rng.next() * TEXTURES as f32) as usize % TEXTURES;
+        // Most items change texture and color; every fourth keeps the previous ones.
+        if k % 4 != 3 || bound == usize::MAX {
+            if tex != bound {
+                frame.push(Op::Bind(tex));
+                bound = tex;
+            }
+            frame.push(Op::Color([
+                0.6 + rng.next() * 0.4,
+                0.6 + rng.next() * 0.4,
+                0.6 + rng.next() * 0.4,
+                0.5 + rng.next() * 0.5,
+            ]));
+        }
+        pixels += f64::from(size * size);
+        let cell = (rng.next() * 4.0) as i32 % 4;
+        if k % 2 == 0 {
+            let (s0, t0) = ((cell % 2) as f32 * 0.5, (cell / 2) as f32 * 0.5);
+            let (first, count) = a.rect([x, y, x + size, y + size], [s0, t0, s0 + 0.5, t0 + 0.5]);
+            frame.push(draw(first, count));
+        } else {
+            frame.push(Op::DrawTex {
+                rect: [x, y, size, size],
+                crop: [(cell % 2) * 32, (cell / 2) * 32, 32, 32],
+            });
+        }
+    }
+    let textures = (0..TEXTURES)
+        .map(|i| {
+            let i = i as u32;
+            Tex::new(64, MinFilter::Linear, MagFilter::Linear, move |x, y| {
+                // Four round icons per atlas, each with a soft edge.
+                let (cx, cy) = ((x % 32) as f32 - 15.5, (y % 32) as f32 - 15.5);
+                let d = (cx * cx + cy * cy).sqrt();
+                let alpha = ((15.0 - d) * 64.0).clamp(0.0, 255.0) as u8;
+                let cell = (x / 32 + 2 * (y / 32)) * 50;
+                [
+                    (60 + i * 35 + cell) as u8,
+                    (200 - i * 20 + x * 2) as u8,
+                    (90 + y * 2 + i * 10) as u8,
+                    alpha,
+                ]
+            })
+        })
+        .map(|mut t| {
+            t.wrap = Wrap::ClampToEdge;
+            t
+        })
+        .collect();
+    let draws = ITEMS;
+    Scene {
+        summary: format!(
+            "2D interface: {ITEMS} alpha-blended textured items of 16-64 px (half quads through \
+             glDrawArrays, half glDrawTexOES sprites from a 64x64 atlas, LINEAR, MODULATE), a \
+             texture bind and a color change before most; orthographic, no depth; {}, \
+             640x480; {draws} draws, {:.2} Mpix per frame",
+            bits_name(format),
+            pixels / 1e6
+        ),
+        class: Class::Main,
+        width: w,
+        height: h,
+        format,
+        dither: true,
+        unit: Unit::Draws,
+        work: draws as f64,
+        vertices: a.len() as f64,
+        pixels,
+        clear_color: [0.15, 0.15, 0.2, 1.0],
+        position: Attr::float(&a.pos, 3),
+        color: None,
+        normal: None,
+        texcoord: [Some(Attr::float(&a.tc, 2)), None],
+        indices: Vec::new(),
+        buffers: false,
+        textures,
+        lighting: None,
+        fog: None,
+        setup: vec![
+            Op::Projection(pixel_ortho(w, h)),
+            Op::Modelview(Mat4::IDENTITY),
+            Op::Enable(Cap::DepthTest, false),
+            Op::Enable(Cap::Blend, true),
+            Op::BlendFunc(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha),
+            Op::ColorArray(false),
+            Op::Texture {
+                unit: 0,
+                tex: Some(0),
+                env: modulate(),
+                coord_replace: false,
+            },
+        ],
+        frame,
+    }
+}
+
+/// 10 000 draws of one 8 × 8-pixel quad (2 triangles), each under its own modelview
+/// (a translation) and in its own current color: the cost of a draw call.
+fn draws(format: ColorFormat) -> Scene {
+    const DRAWS: usize = 10_000;
+    let (w, h) = (640, 480);
+    let mut rng = Lcg(10_000);
+    let mut a = Arrays::default();
+    let quad = a.rect([0.0, 0.0, 8.0, 8.0], [0.0; 4]);
+    let mut frame = Vec::with_capacity(DRAWS * 3);
+    for _ in 0..DRAWS {
+        let x = (rng.next() * (w - 8) as f32).floor();
+        let y = (rng.next() * (h - 8) as f32).floor();
+        frame.push(Op::Modelview(Mat4::from_translation(Vec3::new(x, y, 0.0))));
+        frame.push(Op::Color(rgb(&mut rng)));
+        frame.push(draw(quad.0, quad.1));
+    }
+    Scene {
+        summary: format!(
+            "{DRAWS} draws of a 2-triangle 8x8-pixel quad, a glLoadMatrixf and a glColor4f \
+             between draws, no depth; {}, 640x480; ns per draw",
+            bits_name(format)
+        ),
+        class: Class::Main,
+        width: w,
+        height: h,
+        format,
+        dither: true,
+        unit: Unit::Draws,
+        work: DRAWS as f64,
+        vertices: (DRAWS * 6) as f64,
+        pixels: (DRAWS * 64) as f64,
+        clear_color: [0.0, 0.0, 0.0, 1.0],
+        position: Attr::float(&a.pos, 3),
+        color: None,
+        normal: None,
+        texcoord: [None, None],
+        indices: Vec::new(),
+        buffers: false,
+        textures: Vec::new(),
+        lighting: None,
+        fog: None,
+        setup: vec![
+            Op::Projection(pixel_ortho(w, h)),
+            Op::Enable(Cap::DepthTest, false),
+            Op::ColorArray(false),
+        ],
+        frame,
     }
 }

@@ -18,10 +18,10 @@ use std::path::{Path, PathBuf};
 use std::ptr::null_mut;
 use std::time::Instant;
 
-use GLES_CM::core::state::{BlendFactor, ShadeModel};
+use GLES_CM::core::state::{BlendFactor, ShadeModel, Winding};
 use GLES_CM::core::texenv::{CombineFunc, EnvMode, Operand, Source, TexEnv};
 use GLES_CM::core::texture::{MagFilter, MinFilter, Wrap};
-use GLES_CM::core::{ComponentType, Primitive};
+use GLES_CM::core::{ColorFormat, ComponentType, Primitive};
 use GLES_CM::gles::tokens::*;
 use GLES_CM::gles::types::{GLenum, GLuint};
 
@@ -108,7 +108,8 @@ pub fn run(job: &Job) -> Result<(), String> {
         }
     };
     let gl = &api;
-    let ctx = match Egl::new(gl, scene.width, scene.height) {
+    let rgb565 = scene.format == ColorFormat::Rgb565;
+    let ctx = match Egl::with_config(gl, scene.width, scene.height, rgb565) {
         Ok(c) => c,
         Err(e) => {
             say(&format!("unavailable {e}"));
@@ -196,6 +197,8 @@ fn cap(c: Cap) -> GLenum {
         Cap::Fog => GL_FOG,
         Cap::Lighting => GL_LIGHTING,
         Cap::PointSprite => GL_POINT_SPRITE_OES,
+        Cap::CullFace => GL_CULL_FACE,
+        Cap::Normalize => GL_NORMALIZE,
     }
 }
 
@@ -317,6 +320,25 @@ fn tex_env(gl: &Api, env: &TexEnv) {
     }
 }
 
+/// `GL_TEXTURE_CROP_RECT_OES` (OES_draw_texture).
+const GL_TEXTURE_CROP_RECT_OES: GLenum = 0x8B9D;
+
+type DrawTexf = unsafe extern "C" fn(f32, f32, f32, f32, f32);
+
+/// `glDrawTexfOES`, an extension entry point: Mesa's `libGLESv1_CM` does not export it, so
+/// it comes from `eglGetProcAddress` (once; a process loads one library).
+fn draw_tex(gl: &Api) -> Option<DrawTexf> {
+    static F: std::sync::OnceLock<Option<DrawTexf>> = std::sync::OnceLock::new();
+    *F.get_or_init(|| {
+        // SAFETY: the name is NUL-terminated; a non-null result is the address of
+        // glDrawTexfOES, whose prototype is `DrawTexf`.
+        unsafe {
+            let p = (gl.eglGetProcAddress)(c"glDrawTexfOES".as_ptr());
+            (!p.is_null()).then(|| std::mem::transmute::<*mut std::ffi::c_void, DrawTexf>(p))
+        }
+    })
+}
+
 /// One op as GL calls.
 fn apply(gl: &Api, scene: &Scene, op: &Op) {
     // SAFETY: a context is current on this thread. Matrices are 16 floats, colors 4; the
@@ -388,6 +410,18 @@ fn apply(gl: &Api, scene: &Scene, op: &Op) {
                 };
                 (gl.glDrawElements)(primitive(*prim), *count as i32, GL_UNSIGNED_SHORT, ptr);
             }
+            Op::FrontFace(w) => (gl.glFrontFace)(match w {
+                Winding::Ccw => GL_CCW,
+                Winding::Cw => GL_CW,
+            }),
+            Op::Bind(t) => (gl.glBindTexture)(GL_TEXTURE_2D, *t as u32 + 1),
+            Op::DrawTex { rect, crop } => {
+                (gl.glTexParameteriv)(GL_TEXTURE_2D, GL_TEXTURE_CROP_RECT_OES, crop.as_ptr());
+                if let Some(f) = draw_tex(gl) {
+                    let [x, y, w, h] = *rect;
+                    f(x, y, 0.0, w, h);
+                }
+            }
         }
     }
 }
@@ -403,7 +437,9 @@ fn setup(gl: &Api, scene: &Scene, mode: Mode) -> Vec<GLuint> {
     // scene's arrays, which live until the process ends.
     unsafe {
         (gl.glViewport)(0, 0, scene.width as i32, scene.height as i32);
-        (gl.glDisable)(GL_DITHER);
+        if !scene.dither {
+            (gl.glDisable)(GL_DITHER);
+        }
         for h in [
             GL_PERSPECTIVE_CORRECTION_HINT,
             GL_POINT_SMOOTH_HINT,
@@ -424,7 +460,7 @@ fn setup(gl: &Api, scene: &Scene, mode: Mode) -> Vec<GLuint> {
                 let id = GL_LIGHT0 + i as u32;
                 (gl.glEnable)(id);
                 let [x, y, z] = light.direction;
-                let p = [x, y, z, 0.0];
+                let p = [x, y, z, if light.point { 1.0 } else { 0.0 }];
                 (gl.glLightfv)(id, GL_POSITION, p.as_ptr());
                 (gl.glLightfv)(id, GL_AMBIENT, light.ambient.as_ptr());
                 (gl.glLightfv)(id, GL_DIFFUSE, light.diffuse.as_ptr());

@@ -202,15 +202,34 @@ fn decode_lanes(format: ColorFormat, w: &Lane<u32>, out: &mut Channels) {
                 }
             }
         }
-        _ => {
-            for j in 0..LANES {
-                let v = decode(format, w[j]);
-                for c in 0..4 {
-                    out[c][j] = v[c];
-                }
-            }
-        }
+        // One arm per format, with the bit counts as constants.
+        ColorFormat::Rgb565 => decode_narrow::<5, 6, 5, 0>(w, out),
+        ColorFormat::Rgba4444 => decode_narrow::<4, 4, 4, 4>(w, out),
+        ColorFormat::Rgba5551 => decode_narrow::<5, 5, 5, 1>(w, out),
     }
+}
+
+/// [`decode_lanes`] for channels of R, G, B, A bits (0: absent, read as 1).
+#[inline(always)]
+fn decode_narrow<const R: u32, const G: u32, const B: u32, const A: u32>(
+    w: &Lane<u32>,
+    out: &mut Channels,
+) {
+    out[0] = decode_channel::<R>(w, 0);
+    out[1] = decode_channel::<G>(w, 8);
+    out[2] = decode_channel::<B>(w, 16);
+    out[3] = decode_channel::<A>(w, 24);
+}
+
+/// One channel of N bits stored at byte `shift`: the n-bit value, which is the stored
+/// byte's top n bits, over 2ⁿ − 1, divided as `decode` divides.
+#[inline(always)]
+fn decode_channel<const N: u32>(w: &Lane<u32>, shift: u32) -> Lane<f32> {
+    if N == 0 {
+        return [1.0; LANES];
+    }
+    let max = ((1u32 << N) - 1) as f32;
+    std::array::from_fn(|j| (((w[j] >> shift) & 0xFF) >> (8 - N)) as i32 as f32 / max)
 }
 
 /// `unorm(c, 8)` written so it vectorizes (`max` maps NaN to 0 as `unorm` does).
@@ -219,9 +238,10 @@ fn unorm8(c: f32) -> u32 {
     floor_i32(unit_or_zero(c) * 255.0 + 0.5).0 as u32
 }
 
-/// Encodes a group to stored words (see `ColorFormat::encode`).
+/// Encodes a group to stored words (see `ColorFormat::encode`), with ordered dithering by
+/// the group's `thresholds` when given (see `encode_dithered`; only narrow formats dither).
 #[inline(always)]
-fn encode_lanes(format: ColorFormat, c: &Channels) -> Lane<u32> {
+fn encode_lanes(format: ColorFormat, c: &Channels, thresholds: Option<&Lane<f32>>) -> Lane<u32> {
     let mut out = [0u32; LANES];
     match format {
         ColorFormat::Rgba8888 => {
@@ -237,16 +257,78 @@ fn encode_lanes(format: ColorFormat, c: &Channels) -> Lane<u32> {
                 *o = unorm8(c[0][j]) | unorm8(c[1][j]) << 8 | unorm8(c[2][j]) << 16 | 0xFF00_0000;
             }
         }
-        _ => out = encode_by_pixel(format, c),
+        ColorFormat::Rgb565 => out = encode_narrow::<5, 6, 5, 0>(c, thresholds),
+        ColorFormat::Rgba4444 => out = encode_narrow::<4, 4, 4, 4>(c, thresholds),
+        ColorFormat::Rgba5551 => out = encode_narrow::<5, 5, 5, 1>(c, thresholds),
     }
     out
 }
 
-/// [`encode_lanes`] for the formats narrower than 8 bits, pixel by pixel (out of line, as
-/// [`colors_by_pixel`]).
-#[inline(never)]
-fn encode_by_pixel(format: ColorFormat, c: &Channels) -> Lane<u32> {
-    std::array::from_fn(|j| format.encode([c[0][j], c[1][j], c[2][j], c[3][j]]))
+/// [`encode_lanes`] for channels of R, G, B, A bits (0: absent, stored as 255).
+#[inline(always)]
+fn encode_narrow<const R: u32, const G: u32, const B: u32, const A: u32>(
+    c: &Channels,
+    thresholds: Option<&Lane<f32>>,
+) -> Lane<u32> {
+    let (r, g) = (
+        encode_channel::<R>(&c[0], thresholds),
+        encode_channel::<G>(&c[1], thresholds),
+    );
+    let (b, a) = (
+        encode_channel::<B>(&c[2], thresholds),
+        encode_channel::<A>(&c[3], thresholds),
+    );
+    std::array::from_fn(|j| r[j] | g[j] << 8 | b[j] << 16 | a[j] << 24)
+}
+
+/// One channel to N bits, widened to its stored byte as `expand_to_8` does. Without
+/// thresholds the value is `unorm(c, N)`; with them `floor(clamp(c) · (2ᴺ − 1) + t)`, where
+/// NaN gives 2ᴺ − 1 as the per-pixel `min` makes it (see `encode_dithered`). One loop per
+/// step, each of which vectorizes (written as one expression per lane, they did not).
+#[inline(always)]
+#[allow(clippy::manual_clamp)]
+fn encode_channel<const N: u32>(c: &Lane<f32>, thresholds: Option<&Lane<f32>>) -> Lane<u32> {
+    if N == 0 {
+        return [0xFF; LANES];
+    }
+    let max_i = (1i32 << N) - 1;
+    let max = max_i as f32;
+    let mut s = [0.0f32; LANES];
+    match thresholds {
+        None => {
+            for j in 0..LANES {
+                s[j] = unit_or_zero(c[j]) * max + 0.5;
+            }
+        }
+        Some(t) => {
+            // `min` first takes NaN to 1, so it ends at 2ᴺ − 1 (t < 1) without a select;
+            // elsewhere this is `clamp`.
+            for j in 0..LANES {
+                s[j] = c[j].min(1.0).max(0.0) * max + t[j];
+            }
+        }
+    }
+    let mut v = [0i32; LANES];
+    for j in 0..LANES {
+        v[j] = floor_i32(s[j]).0;
+    }
+    let mut out = [0u32; LANES];
+    for j in 0..LANES {
+        out[j] = expand_lane(v[j] as u32, N);
+    }
+    out
+}
+
+/// `expand_to_8(v, n)` for v < 2ⁿ, n ≤ 6: the division by 2ⁿ − 1 as a multiply and shift
+/// (exact for every such v, checked by a test), which vectorizes where a division does not.
+#[inline(always)]
+fn expand_lane(v: u32, n: u32) -> u32 {
+    if n == 1 {
+        return v * 255;
+    }
+    let max = (1u32 << n) - 1;
+    let magic = (1u32 << 20).div_ceil(max);
+    ((v * 255 + max / 2) * magic) >> 20
 }
 
 /// One blend factor for channel `c` of every lane (the alpha lane of `SRC_ALPHA_SATURATE`
@@ -419,23 +501,53 @@ fn group_pass<const DEPTH: bool>(
     (k.keep != u32::MAX).then_some(pass)
 }
 
-/// The stored words of a group's fragment colors `src`, blended over `color` when `BLEND`.
+/// The stored words of a group's fragment colors `src`, blended over `color` when `BLEND`,
+/// dithered by `thresholds` when given.
 #[inline(always)]
 fn shade_words<const BLEND: bool>(
     k: &FragmentKey,
     color: &Lane<u32>,
     src: &mut Channels,
+    thresholds: Option<&Lane<f32>>,
 ) -> Lane<u32> {
     if BLEND {
         let b = k.blend.expect("BLEND routes blend");
         let mut dst: Channels = [[0.0; LANES]; 4];
         decode_lanes(k.color, color, &mut dst);
         blend_lanes(&b, src, &mut dst);
-        encode_lanes(k.color, &dst)
+        encode_lanes(k.color, &dst, thresholds)
     } else {
-        encode_lanes(k.color, src)
+        encode_lanes(k.color, src, thresholds)
     }
 }
+
+/// The dither thresholds of every group of a span when the key dithers. Groups start
+/// [`LANES`] pixels apart, a multiple of the matrix's period 4, so one lane serves them all.
+#[inline(always)]
+fn span_thresholds(k: &FragmentKey, span: Span) -> Option<Lane<f32>> {
+    k.dither
+        .then(|| THRESHOLDS[(span.y & 3) as usize][(span.x0 & 3) as usize])
+}
+
+/// `dither_threshold(x + j, y)` for lane j of a group at x, by y mod 4 and x mod 4: a
+/// lookup per span instead of eight.
+static THRESHOLDS: [[Lane<f32>; 4]; 4] = {
+    let mut t = [[[0.0; LANES]; 4]; 4];
+    let mut y = 0;
+    while y < 4 {
+        let mut x = 0;
+        while x < 4 {
+            let mut j = 0;
+            while j < LANES {
+                t[y][x][j] = (BAYER[y][(x + j) % 4] as f32 + 0.5) / 16.0;
+                j += 1;
+            }
+            x += 1;
+        }
+        y += 1;
+    }
+    t
+};
 
 /// Writes `words` where the fragment passes, through the color mask.
 #[inline(always)]
@@ -449,7 +561,7 @@ fn store(k: &FragmentKey, color: &mut Lane<u32>, pass: &Lane<u32>, words: &Lane<
 /// Spans shorter than this run pixel by pixel: a group costs as much as [`LANES`] pixels.
 const SHORT: usize = 6;
 
-/// The span routine for keys without alpha test, stencil, logic op or dither.
+/// The span routine for keys without alpha test, stencil or logic op.
 #[multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
 pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     k: &FragmentKey,
@@ -464,7 +576,7 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
     let flat = t.flat.unwrap_or_default();
-    if !DEPTH && !SMOOTH && !BLEND {
+    if !DEPTH && !SMOOTH && !BLEND && !k.dither {
         // One word for the whole span: a fill.
         let (word, keep) = (k.color.encode(flat), k.keep);
         for px in &mut band.color[start..start + len] {
@@ -472,13 +584,25 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
         }
         return;
     }
+    let thresholds = span_thresholds(k, span);
+    let thresholds = thresholds.as_ref();
     for_each_group!(DEPTH, band, start, len, |i0, live, color, depth| {
-        simple_group::<DEPTH, SMOOTH, BLEND>(k, &mut interp, flat, i0, live, color, depth)
+        simple_group::<DEPTH, SMOOTH, BLEND>(
+            k,
+            &mut interp,
+            flat,
+            i0,
+            live,
+            color,
+            depth,
+            thresholds,
+        )
     });
 }
 
 /// One group of [`simple`]: lanes beyond the span are computed and discarded by the caller.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     interp: &mut SpanInterp,
@@ -487,6 +611,7 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     live: Lane<u32>,
     color: &mut Lane<u32>,
     depth: Option<&mut Lane<u32>>,
+    thresholds: Option<&Lane<f32>>,
 ) {
     let Some(pass) = group_pass::<DEPTH>(k, interp, i0, live, depth) else {
         return;
@@ -505,7 +630,7 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
             } else {
                 flat.map(|c| [c; LANES])
             };
-            shade_words::<BLEND>(k, color, &mut src)
+            shade_words::<BLEND>(k, color, &mut src, thresholds)
         }
     };
     store(k, color, &pass, &words);
@@ -541,9 +666,14 @@ fn simple_pixels<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
         }
         let dst = band.color[at];
         let src = if SMOOTH { interp.color(i) } else { flat };
-        let word = if BLEND {
+        let src = if BLEND {
             let b = k.blend.expect("BLEND routes blend");
-            k.color.encode(blend(&b, src, decode(k.color, dst)))
+            blend(&b, src, decode(k.color, dst))
+        } else {
+            src
+        };
+        let word = if k.dither {
+            encode_dithered(k.color, src, x, span.y)
         } else {
             k.color.encode(src)
         };
@@ -1159,8 +1289,8 @@ fn texels_by_pixel(
     }
 }
 
-/// The span routine for textured or fogged keys without cube maps, alpha test, stencil,
-/// logic op or dither: every unit in order, then fog. The depth test runs before texturing,
+/// The span routine for textured or fogged keys without cube maps, alpha test, stencil or
+/// logic op: every unit in order, then fog. The depth test runs before texturing,
 /// which gives the same result (ES 1.1 §3.7: nothing between them can discard a fragment
 /// here) and skips the sampling of hidden fragments.
 #[multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
@@ -1175,8 +1305,20 @@ pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
     let mut tex = SpanTex::new(stage, t, span);
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
+    let thresholds = span_thresholds(k, span);
+    let thresholds = thresholds.as_ref();
     for_each_group!(DEPTH, band, start, len, |i0, live, color, depth| {
-        textured_group::<F, DEPTH, BLEND>(k, t, &mut interp, &mut tex, i0, live, color, depth)
+        textured_group::<F, DEPTH, BLEND>(
+            k,
+            t,
+            &mut interp,
+            &mut tex,
+            i0,
+            live,
+            color,
+            depth,
+            thresholds,
+        )
     });
 }
 
@@ -1195,6 +1337,7 @@ fn textured_group<const F: u8, const DEPTH: bool, const BLEND: bool>(
     live: Lane<u32>,
     color: &mut Lane<u32>,
     depth: Option<&mut Lane<u32>>,
+    thresholds: Option<&Lane<f32>>,
 ) {
     let Some(pass) = group_pass::<DEPTH>(k, interp, i0, live, depth) else {
         return;
@@ -1225,6 +1368,100 @@ fn textured_group<const F: u8, const DEPTH: bool, const BLEND: bool>(
     if let Some(f) = &tex.stage.fog {
         fog_lanes(tex, f, i0, &mut c);
     }
-    let words = shade_words::<BLEND>(k, color, &mut c);
+    let words = shade_words::<BLEND>(k, color, &mut c, thresholds);
     store(k, color, &pass, &words);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn expand_lane_is_expand_to_8_for_every_narrow_value() {
+        for n in 1..=6 {
+            for v in 0..(1u32 << n) {
+                assert_eq!(
+                    expand_lane(v, n),
+                    expand_to_8(v, n) as u32,
+                    "{v} of {n} bits"
+                );
+            }
+        }
+    }
+
+    /// Inputs around every rounding and dithering boundary of the narrow formats, plus values
+    /// outside [0, 1], signed zeros and NaN, against the per-pixel encoders and decoder.
+    #[test]
+    fn narrow_lanes_encode_and_decode_as_the_per_pixel_code() {
+        let mut values = vec![f32::NAN, -0.0, 0.0, -1.0, 1.0, 1.5, f32::INFINITY, 1e-30];
+        for max in [1.0f32, 15.0, 31.0, 63.0] {
+            for k in 0..=(max as i32 * 16) {
+                let v = k as f32 / (16.0 * max);
+                values.extend([v, v.next_up(), v.next_down()]);
+            }
+        }
+        for format in [
+            ColorFormat::Rgb565,
+            ColorFormat::Rgba4444,
+            ColorFormat::Rgba5551,
+            ColorFormat::Rgba8888,
+            ColorFormat::Rgb888,
+        ] {
+            for (g, chunk) in values.chunks(LANES).enumerate() {
+                let mut c: Channels = [[0.0; LANES]; 4];
+                for (j, &v) in chunk.iter().enumerate() {
+                    // Each channel sees every value, at another lane.
+                    for ch in 0..4 {
+                        c[ch][(j + ch) % LANES] = v;
+                    }
+                }
+                let words = encode_lanes(format, &c, None);
+                let (x0, y) = (g as i32 % 4, g as i32 / 4);
+                let t: Lane<f32> = std::array::from_fn(|j| dither_threshold(x0 + j as i32, y));
+                let dithered = encode_lanes(format, &c, Some(&t));
+                let mut back: Channels = [[0.0; LANES]; 4];
+                decode_lanes(format, &words, &mut back);
+                for j in 0..LANES {
+                    let px = [c[0][j], c[1][j], c[2][j], c[3][j]];
+                    assert_eq!(words[j], format.encode(px), "{format:?} {px:?}");
+                    if format != ColorFormat::Rgba8888 && format != ColorFormat::Rgb888 {
+                        let want = encode_dithered(format, px, x0 + j as i32, y);
+                        assert_eq!(dithered[j], want, "{format:?} dithered {px:?}");
+                    }
+                    let want = decode(format, words[j]);
+                    for ch in 0..4 {
+                        assert_eq!(back[ch][j].to_bits(), want[ch].to_bits(), "{format:?}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_threshold_table_is_the_dither_matrix() {
+        for y in -4..8 {
+            for x in -4..8 {
+                let k = FragmentKey::new(
+                    &RenderState {
+                        dither: true,
+                        ..RenderState::new(8, 8)
+                    },
+                    crate::core::TargetFormat {
+                        color: ColorFormat::Rgb565,
+                        depth: None,
+                        stencil_bits: 0,
+                    },
+                );
+                let span = Span {
+                    y,
+                    x0: x,
+                    x1: x + 8,
+                };
+                let t = span_thresholds(&k, span).expect("the key dithers");
+                for (j, t) in t.iter().enumerate() {
+                    assert_eq!(*t, dither_threshold(x + j as i32, y), "({x}, {y}) lane {j}");
+                }
+            }
+        }
+    }
 }
