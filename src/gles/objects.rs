@@ -1,5 +1,5 @@
-//! A share group's namespace of one kind of object: buffers (ES 1.1 §2.9), textures
-//! (§3.8.12) or renderbuffers (`OES_framebuffer_object`).
+//! A share group's namespace of one kind of object: buffer objects (ES 1.1 §2.9), texture
+//! objects (§3.7) or renderbuffers (`OES_framebuffer_object`).
 //!
 //! Names and objects are kept apart. A binding point holds a [`Binding`]: the name it was
 //! bound with (what queries return) and a counted reference to the object. Deleting a name
