@@ -579,8 +579,6 @@ static void sharing(void)
 static void render_to_mipmap_level(void)
 {
     GLuint tex, fb;
-    GLfloat v[8];
-    static const GLfloat st[8] = {0, 0, 1, 0, 0, 1, 1, 1};
     int level;
 
     glGenTextures(1, &tex);
@@ -603,20 +601,15 @@ static void render_to_mipmap_level(void)
     glViewport(0, 0, ct.width, ct.height);
     CHECK_GL(GL_NO_ERROR);
 
-    /* A 4x4 quad samples level 1 (8x8 texels onto 4x4 pixels), a 16x16 one level 0. */
+    /* A 4x4 quad samples level 1 (8x8 texels onto 4x4 pixels). */
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
     glBindTexture(GL_TEXTURE_2D, tex);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    v[0] = -1; v[1] = -1; v[2] = -1 + 8.0f / ct.width; v[3] = -1;
-    v[4] = -1; v[5] = -1 + 8.0f / ct.height; v[6] = v[2]; v[7] = v[5];
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glVertexPointer(2, GL_FLOAT, 0, v);
-    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-    glTexCoordPointer(2, GL_FLOAT, 0, st);
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    glViewport(0, 0, 4, 4);
+    textured_quad();
+    glViewport(0, 0, ct.width, ct.height);
     glDisable(GL_TEXTURE_2D);
     CHECK_PIXEL(1, 1, 0, 255, 255, 255, 0);
     glDeleteFramebuffersOES(1, &fb);

@@ -2,7 +2,7 @@
 # Bounded fuzzing of the M3G Loader: scripts/fuzz-loader.sh [SECONDS] (default 60), split
 # between the targets: m3g_loader (one file: load, save, reload, render) and
 # m3g_references (several files in an in-memory file system referring to each other:
-# load, render). Seeds libFuzzer with the .m3g corpus in ../shared/m3g-corpus and fails on
+# load, render). Seeds libFuzzer with the .m3g corpus in tests/data/m3g and fails on
 # any crash, panic, timeout (10 s per input) or allocation over 512 MiB. Needs the nightly
 # toolchain and cargo-fuzz; installs them through rustup and cargo when they are missing.
 set -eu
@@ -16,12 +16,12 @@ command -v cargo-fuzz >/dev/null 2>&1 || cargo install --locked cargo-fuzz
 for target in m3g_loader m3g_references; do
     corpus=fuzz/corpus/$target
     mkdir -p "$corpus"
-    cp ../shared/m3g-corpus/*.m3g "$corpus"/
+    cp tests/data/m3g/*.m3g "$corpus"/
 done
 # A seed of the references target: a file whose external reference names the next file.
 printf '\n--\n' >fuzz/corpus/m3g_references/.sep
-cat ../shared/m3g-corpus/memory.m3g fuzz/corpus/m3g_references/.sep \
-    ../shared/m3g-corpus/cube.m3g >fuzz/corpus/m3g_references/memory-then-cube
+cat tests/data/m3g/memory.m3g fuzz/corpus/m3g_references/.sep \
+    tests/data/m3g/cube.m3g >fuzz/corpus/m3g_references/memory-then-cube
 rm fuzz/corpus/m3g_references/.sep
 cd fuzz
 for target in m3g_loader m3g_references; do

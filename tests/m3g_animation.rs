@@ -1235,12 +1235,12 @@ fn duplicate_copies_the_skeleton_and_remaps_bones() {
 
 // ---------------------------------------------------------------------------------------
 // Corpus: the animated and skinned files against the reference images, with the tolerance of
-// ../shared/m3g-corpus/reference/MANIFEST.md (a pixel fails when some channel is off by more
+// tests/data/m3g/reference/MANIFEST.md (a pixel fails when some channel is off by more
 // than 8; at most 1 % of pixels may fail, and the mean channel difference is at most 1).
 
 #[test]
 fn corpus_animated_files_match_the_reference_at_three_times() {
-    let dir = std::path::Path::new("../shared/m3g-corpus");
+    let dir = std::path::Path::new("tests/data/m3g");
     if !dir.exists() {
         eprintln!("corpus not found; skipped");
         return;

@@ -495,7 +495,7 @@ fn a_referenced_file_is_read_within_the_budget() {
 /// nodes through `render_node`) and over the 100 000-deep chain: no panic.
 #[test]
 fn the_fuzz_renderer_runs_over_the_corpus_and_a_deep_chain() {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/m3g-corpus");
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/m3g");
     let mut files = 0;
     for e in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
         if e.path().extension().is_some_and(|x| x == "m3g") {

@@ -11,7 +11,7 @@ use GLES_CM::m3g::writer::save;
 use GLES_CM::m3g::*;
 
 fn corpus_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/m3g-corpus")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/m3g")
 }
 
 fn corpus() -> Vec<PathBuf> {

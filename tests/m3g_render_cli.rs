@@ -1,6 +1,6 @@
 //! The `m3g-render` command-line tool run as a user would: frame sequences with an animated
 //! PNG, camera selection, argument and file errors (exit code 2), and every corpus file.
-//! The corpus tests are skipped (with a note) when `../shared/m3g-corpus` is missing.
+//! The corpus tests are skipped (with a note) when `tests/data/m3g` is missing.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -10,7 +10,7 @@ use image::AnimationDecoder;
 const EXE: &str = env!("CARGO_BIN_EXE_m3g-render");
 
 fn corpus_dir() -> Option<PathBuf> {
-    let d = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/m3g-corpus");
+    let d = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/m3g");
     if d.is_dir() {
         Some(d)
     } else {

@@ -1,6 +1,6 @@
 //! Fuzzes the M3G Loader (and, for inputs that load, the writer and a reload, and rendering
 //! what loaded): any input must give `Ok` or a `LoadError`, never a panic, hang or huge
-//! allocation. Seed the corpus with `../shared/m3g-corpus/*.m3g` (see README "Fuzzing").
+//! allocation. Seed the corpus with `tests/data/m3g/*.m3g` (see README "Fuzzing").
 #![no_main]
 
 mod render;

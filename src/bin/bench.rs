@@ -673,7 +673,7 @@ fn main() -> ExitCode {
             return ExitCode::FAILURE;
         }
     }
-    let corpus = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/m3g-corpus");
+    let corpus = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/m3g");
     let ctx = Ctx {
         exe,
         ours,

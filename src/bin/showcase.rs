@@ -6,7 +6,7 @@
 //!    its frames into `target/showcase/demo-NN.png`.
 //! 2. Builds an M3G scene with the Rust API (lit, textured, fogged, a keyframed orientation),
 //!    writes it as a .m3g file, loads it back and renders frames of its animation
-//!    (`m3g-NN.png`); then loads FILE, or `robot.m3g` of `../shared/m3g-corpus` when that is
+//!    (`m3g-NN.png`); then loads FILE, or `robot.m3g` of `tests/data/m3g` when that is
 //!    there, and renders it at three times.
 //! 3. Prints speed beside error: 20 000 smooth-shaded, depth-tested triangles in perspective
 //!    through the core on one and on all threads, against the f64 reference renderer.

@@ -278,7 +278,7 @@ pub fn run(out: &Path, times: &[i32], file: Option<&Path>) -> std::result::Resul
     ));
 
     // A file from outside: the one named on the command line, else one of the corpus.
-    let corpus = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/m3g-corpus/robot.m3g");
+    let corpus = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/m3g/robot.m3g");
     let corpus = corpus.canonicalize().unwrap_or(corpus);
     let other = match file {
         Some(f) => Some(f.to_path_buf()),
