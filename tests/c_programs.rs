@@ -454,7 +454,9 @@ fn mesa_dev_installed() -> bool {
 #[test]
 fn dropin_binary_runs_on_mesa_and_ours() {
     if !mesa_dev_installed() {
-        println!("skipped: Mesa's libegl-dev/libgles-dev are not installed (scripts/mesa-setup.sh)");
+        println!(
+            "skipped: Mesa's libegl-dev/libgles-dev are not installed (scripts/mesa-setup.sh)"
+        );
         return;
     }
     let lib = lib_dir();

@@ -1,4 +1,4 @@
-//! The numerical hard cases of `../shared/reference/gles-checklist.md` §4 (1–30), one test
+//! The numerical hard cases of the GLES checklist (§4, cases 1–30), one test
 //! each, named after the case, and the M3G hard cases of `m3g-checklist.md` §5 that
 //! `tests/m3g_*.rs` do not already cover (in `tests/m3g_hard_cases.rs`). Each asserts the
 //! behavior the specification prescribes or, where it leaves room, the one we document, and

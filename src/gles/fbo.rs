@@ -114,23 +114,24 @@ impl Renderbuffer {
     }
 }
 
-/// A context's framebuffer object names: `None` for names generated but not yet bound.
+/// Names of objects a context keeps to itself (framebuffer objects, vertex array objects):
+/// `None` for names generated but not yet bound.
 #[derive(Debug)]
-pub struct FramebufferNames<T> {
+pub struct ContextNames<T> {
     objects: HashMap<GLuint, Option<T>>,
     next: GLuint,
 }
 
-impl<T> Default for FramebufferNames<T> {
+impl<T> Default for ContextNames<T> {
     fn default() -> Self {
-        FramebufferNames {
+        ContextNames {
             objects: HashMap::new(),
             next: 0,
         }
     }
 }
 
-impl<T: Default> FramebufferNames<T> {
+impl<T: Default> ContextNames<T> {
     pub fn get(&self, name: GLuint) -> Option<&T> {
         self.objects.get(&name)?.as_ref()
     }
@@ -139,14 +140,14 @@ impl<T: Default> FramebufferNames<T> {
         self.objects.get_mut(&name)?.as_mut()
     }
 
-    fn get_or_create(&mut self, name: GLuint) -> &mut T {
+    pub(super) fn get_or_create(&mut self, name: GLuint) -> &mut T {
         self.objects
             .entry(name)
             .or_insert(None)
             .get_or_insert_with(T::default)
     }
 
-    fn generate(&mut self) -> GLuint {
+    pub(super) fn generate(&mut self) -> GLuint {
         loop {
             self.next = self.next.wrapping_add(1).max(1);
             if !self.objects.contains_key(&self.next) {
@@ -156,8 +157,13 @@ impl<T: Default> FramebufferNames<T> {
         }
     }
 
-    fn remove(&mut self, name: GLuint) -> bool {
+    pub(super) fn remove(&mut self, name: GLuint) -> bool {
         self.objects.remove(&name).is_some()
+    }
+
+    /// Whether `name` was generated (or bound) and not deleted.
+    pub(super) fn contains(&self, name: GLuint) -> bool {
+        self.objects.contains_key(&name)
     }
 }
 
@@ -216,7 +222,7 @@ type Key = [(Attachment, u64); 3];
 /// A context's framebuffer objects and bindings.
 #[derive(Default)]
 pub struct FramebufferState {
-    names: FramebufferNames<Framebuffer>,
+    names: ContextNames<Framebuffer>,
     /// `GL_FRAMEBUFFER_BINDING_OES` (0: the EGL surfaces).
     pub bound: GLuint,
     /// `GL_RENDERBUFFER_BINDING_OES`.

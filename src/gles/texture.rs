@@ -52,7 +52,7 @@ impl Context {
     /// glTexGen / glGetTexGen (`OES_texture_cube_map`): `coord` must be
     /// `GL_TEXTURE_GEN_STR_OES` and `pname` `GL_TEXTURE_GEN_MODE_OES`.
     pub fn tex_gen(&mut self, coord: GLenum, pname: GLenum, param: f64) {
-        if coord != GL_TEXTURE_GEN_STR_OES || pname != GL_TEXTURE_GEN_MODE_OES {
+        if tex_gen_parameter_count(coord, pname).is_none() {
             return self.set_error(GL_INVALID_ENUM);
         }
         let mode = if param.fract() == 0.0 && (0.0..=u32::MAX as f64).contains(&param) {
@@ -68,7 +68,7 @@ impl Context {
 
     /// The active unit's `GL_TEXTURE_GEN_MODE_OES`, or `None` (`GL_INVALID_ENUM` raised).
     pub fn get_tex_gen(&mut self, coord: GLenum, pname: GLenum) -> Option<GLenum> {
-        if coord != GL_TEXTURE_GEN_STR_OES || pname != GL_TEXTURE_GEN_MODE_OES {
+        if tex_gen_parameter_count(coord, pname).is_none() {
             self.set_error(GL_INVALID_ENUM);
             return None;
         }

@@ -9,10 +9,9 @@
 //! `Context::buffers.element_array`), so draws read it as before; binding another object
 //! parks the live state in the previous object's slot and takes the new one's.
 
-use std::collections::HashMap;
-
 use super::arrays::ClientArrays;
 use super::context::Context;
+use super::fbo::ContextNames;
 use super::get::Value;
 use super::objects::Binding;
 use super::tokens::*;
@@ -29,13 +28,12 @@ struct Parked {
 /// A context's vertex array objects.
 #[derive(Default)]
 pub struct VertexArrays {
-    /// Every generated name: `None` until first bound (the object is made then).
-    names: HashMap<GLuint, Option<Parked>>,
+    /// The objects, made when first bound; the bound one's slot is empty (its state is live).
+    names: ContextNames<Parked>,
     /// The state of object 0, the default, while another is bound.
     default: Parked,
     /// `GL_VERTEX_ARRAY_BINDING_OES`.
     bound: GLuint,
-    next: GLuint,
 }
 
 /// Exchanges the array pointers of `a` and `b` (not the selector or current values).
@@ -55,46 +53,31 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return Vec::new();
         }
-        let v = &mut self.vertex_arrays;
         (0..n)
-            .map(|_| loop {
-                v.next = v.next.wrapping_add(1).max(1);
-                if !v.names.contains_key(&v.next) {
-                    v.names.insert(v.next, None);
-                    break v.next;
-                }
-            })
+            .map(|_| self.vertex_arrays.names.generate())
             .collect()
     }
 
     /// `glBindVertexArrayOES`: names not generated (or deleted) are `GL_INVALID_OPERATION`.
     pub fn bind_vertex_array(&mut self, name: GLuint) {
-        if name != 0 && !self.vertex_arrays.names.contains_key(&name) {
+        if name != 0 && !self.vertex_arrays.names.contains(name) {
             return self.set_error(GL_INVALID_OPERATION);
         }
         if name == self.vertex_arrays.bound {
             return;
         }
-        let mut incoming = if name == 0 {
-            std::mem::take(&mut self.vertex_arrays.default)
-        } else {
-            self.vertex_arrays
-                .names
-                .get_mut(&name)
-                .and_then(Option::take)
-                .unwrap_or_default()
-        };
+        let v = &mut self.vertex_arrays;
+        let mut incoming = std::mem::take(match name {
+            0 => &mut v.default,
+            n => v.names.get_or_create(n),
+        });
         swap_pointers(&mut self.arrays, &mut incoming.arrays);
         std::mem::swap(&mut self.buffers.element_array, &mut incoming.element_array);
         // `incoming` now holds the state of the object that was bound.
         let v = &mut self.vertex_arrays;
         match v.bound {
             0 => v.default = incoming,
-            old => {
-                if let Some(slot) = v.names.get_mut(&old) {
-                    *slot = Some(incoming);
-                }
-            }
+            old => *v.names.get_or_create(old) = incoming,
         }
         v.bound = name;
     }
@@ -112,14 +95,13 @@ impl Context {
             if name == self.vertex_arrays.bound {
                 self.bind_vertex_array(0);
             }
-            self.vertex_arrays.names.remove(&name);
+            self.vertex_arrays.names.remove(name);
         }
     }
 
     /// `glIsVertexArrayOES`: true for names bound at least once and not deleted.
     pub fn is_vertex_array(&self, name: GLuint) -> bool {
-        matches!(self.vertex_arrays.names.get(&name), Some(Some(_)))
-            || (name != 0 && name == self.vertex_arrays.bound)
+        self.vertex_arrays.names.get(name).is_some()
     }
 
     pub(super) fn vertex_array_value(&self, pname: GLenum) -> Option<Value> {
