@@ -27,48 +27,9 @@ fn corpus() -> Vec<PathBuf> {
 // ---------------------------------------------------------------------------------------
 // Building files by hand.
 
-fn section(scheme: u8, objects: &[u8]) -> Vec<u8> {
-    let stored = if scheme == 1 {
-        miniz_oxide::deflate::compress_to_vec_zlib(objects, 6)
-    } else {
-        objects.to_vec()
-    };
-    let mut s = vec![scheme];
-    s.extend_from_slice(&(stored.len() as u32 + 13).to_le_bytes());
-    s.extend_from_slice(&(objects.len() as u32).to_le_bytes());
-    s.extend_from_slice(&stored);
-    let a = adler32(&s);
-    s.extend_from_slice(&a.to_le_bytes());
-    s
-}
-
-fn object(ty: u8, data: &[u8]) -> Vec<u8> {
-    let mut o = vec![ty];
-    o.extend_from_slice(&(data.len() as u32).to_le_bytes());
-    o.extend_from_slice(data);
-    o
-}
-
-/// A file from object sections (each a list of objects), fixing TotalFileSize.
-fn file(xrefs: bool, sections: &[(u8, Vec<Vec<u8>>)]) -> Vec<u8> {
-    let body: Vec<Vec<u8>> = sections
-        .iter()
-        .map(|(s, objs)| section(*s, &objs.concat()))
-        .collect();
-    let header_size = 12 + 13 + 5 + 12;
-    let total = header_size + body.iter().map(Vec::len).sum::<usize>();
-    let mut h = vec![1, 0, xrefs as u8];
-    h.extend_from_slice(&(total as u32).to_le_bytes());
-    h.extend_from_slice(&(total as u32).to_le_bytes());
-    h.push(0);
-    let mut f = FILE_IDENTIFIER.to_vec();
-    f.extend(section(0, &object(0, &h)));
-    for b in body {
-        f.extend(b);
-    }
-    assert_eq!(f.len(), total);
-    f
-}
+#[path = "common/m3g_file.rs"]
+mod m3g_file;
+use m3g_file::{file, object, section};
 
 fn o3d() -> Vec<u8> {
     vec![0; 12]
