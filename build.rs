@@ -168,6 +168,11 @@ const GL_EXTENSION_FUNCTIONS: &[(&str, &[&str])] = &[
         "GL_EXT_multi_draw_arrays",
         &["glMultiDrawArraysEXT", "glMultiDrawElementsEXT"],
     ),
+    ("GL_EXT_polygon_offset_clamp", &["glPolygonOffsetClampEXT"]),
+    (
+        "GL_EXT_map_buffer_range",
+        &["glMapBufferRangeEXT", "glFlushMappedBufferRangeEXT"],
+    ),
     (
         "GL_OES_vertex_array_object",
         &[

@@ -727,7 +727,11 @@ fn case_06_polygon_offset_on_grazing_polygons() {
             );
             let wall = count(&t, |p| p == [0, 255, 0, 255]);
             assert!(wall > 300);
-            s.polygon_offset = offset.map(|(factor, units)| PolygonOffset { factor, units });
+            s.polygon_offset = offset.map(|(factor, units)| PolygonOffset {
+                factor,
+                units,
+                clamp: 0.0,
+            });
             draw(
                 &s,
                 &mut t,

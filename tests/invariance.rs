@@ -374,6 +374,7 @@ fn a_second_pass_with_depth_equal_hits_the_same_pixels() {
                         s.polygon_offset = Some(PolygonOffset {
                             factor: 0.0,
                             units: 0.0,
+                            clamp: 0.0,
                         });
                     }
                 });

@@ -702,12 +702,23 @@ mod tests {
             },
             rgba,
         );
-        for (factor, units) in [(0.0, 1.0), (1.0, 0.0), (-2.0, -3.0), (4.0, 2.0)] {
+        for (factor, units, clamp) in [
+            (0.0, 1.0, 0.0),
+            (1.0, 0.0, 0.0),
+            (-2.0, -3.0, 0.0),
+            (4.0, 2.0, 0.0),
+            (4.0, 2.0, 1e-4),
+            (-4.0, -2.0, -1e-4),
+        ] {
             add(
-                format!("polygon offset {factor} {units}"),
+                format!("polygon offset {factor} {units} clamp {clamp}"),
                 &|s| {
                     s.depth_test = Some(CompareFunc::LessEqual);
-                    s.polygon_offset = Some(PolygonOffset { factor, units });
+                    s.polygon_offset = Some(PolygonOffset {
+                        factor,
+                        units,
+                        clamp,
+                    });
                 },
                 rgba,
             );

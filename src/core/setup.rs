@@ -394,7 +394,7 @@ pub fn triangle(
         // ES 1.1 §3.5.5: factor × the larger depth slope (per pixel, in window space) plus
         // units × the smallest resolvable difference, one step of the depth buffer.
         let slope = z_plane.dx.abs().max(z_plane.dy.abs());
-        z_plane.c += o.factor as f64 * slope + o.units as f64 / df.max() as f64;
+        z_plane.c += o.offset(slope, df.max() as f64);
     }
     // Back-facing triangles take the back colors (two-sided lighting; equal to the front
     // colors otherwise).

@@ -191,6 +191,26 @@ impl LogicOp {
 pub struct PolygonOffset {
     pub factor: f32,
     pub units: f32,
+    /// `EXT_polygon_offset_clamp`: the offset's bound in its own sign (a positive clamp
+    /// bounds it from above, a negative one from below); 0 or NaN bounds nothing.
+    pub clamp: f32,
+}
+
+impl PolygonOffset {
+    /// The depth offset of a triangle whose larger window-space depth slope is `slope`, in
+    /// a depth buffer of `depth_max` steps (ES 1.1 §3.5.5: factor × slope + units × one
+    /// step), clamped.
+    pub fn offset(&self, slope: f64, depth_max: f64) -> f64 {
+        let o = self.factor as f64 * slope + self.units as f64 / depth_max;
+        let c = self.clamp as f64;
+        if c > 0.0 {
+            o.min(c)
+        } else if c < 0.0 {
+            o.max(c)
+        } else {
+            o
+        }
+    }
 }
 
 /// What a hint asks for (ARCHITECTURE decision 4). The GL's `GL_DONT_CARE` maps to one of

@@ -1,5 +1,6 @@
 //! Texture objects: sampler parameters, mip chains of RGBA8 texels, pixel unpacking, mipmap
-//! generation and the `OES_compressed_paletted_texture` decoder. Plain Rust: the GL layer
+//! generation and the `OES_compressed_paletted_texture` and ETC1 decoders (PVRTC and S3TC
+//! in [`pvrtc`] and [`s3tc`]). Plain Rust: the GL layer
 //! (`gles/texture.rs`) validates enums and sizes and calls in here.
 //!
 //! Every level keeps its base format (what GL reports and what texture environments combine
@@ -10,9 +11,12 @@
 //! first row the application gave (t = 0).
 
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, Weak};
 
 use super::target::expand_to_8;
+
+pub mod pvrtc;
+pub mod s3tc;
 
 /// The largest width and height of a level-0 image (`GL_MAX_TEXTURE_SIZE`).
 pub const MAX_TEXTURE_SIZE: u32 = 2048;
@@ -285,9 +289,20 @@ pub enum Wrap {
 }
 
 impl Wrap {
-    /// The texel index `i` of a level `n` texels wide (a power of two) lands on.
+    /// The texel index `i` of a level `n` texels wide lands on (`OES_texture_npot`: any
+    /// `n` ≥ 1). Powers of two wrap with a mask; other sizes pay a division.
     #[inline(always)]
     pub fn index(self, i: i32, n: i32) -> i32 {
+        if n & (n - 1) == 0 {
+            self.index_pot(i, n)
+        } else {
+            self.index_npot(i, n)
+        }
+    }
+
+    /// [`Wrap::index`] for `n` a power of two.
+    #[inline(always)]
+    pub fn index_pot(self, i: i32, n: i32) -> i32 {
         match self {
             Wrap::Repeat => i & (n - 1),
             Wrap::ClampToEdge => i.clamp(0, n - 1),
@@ -300,6 +315,25 @@ impl Wrap {
                 }
             }
         }
+    }
+
+    /// [`Wrap::index`] for any `n` ≥ 1 (in i64: 2n and the remainder of i32::MIN stay in
+    /// range).
+    #[inline(always)]
+    pub fn index_npot(self, i: i32, n: i32) -> i32 {
+        let (i, n) = (i as i64, n as i64);
+        (match self {
+            Wrap::Repeat => i.rem_euclid(n),
+            Wrap::ClampToEdge => i.clamp(0, n - 1),
+            Wrap::MirroredRepeat => {
+                let m = i.rem_euclid(2 * n);
+                if m >= n {
+                    2 * n - 1 - m
+                } else {
+                    m
+                }
+            }
+        }) as i32
     }
 
     /// Whether adding `k` to a coordinate changes nothing sampled: whole periods under
@@ -320,6 +354,24 @@ static GENERATION: AtomicU64 = AtomicU64::new(1);
 
 fn next_generation() -> u64 {
     GENERATION.fetch_add(1, Ordering::Relaxed)
+}
+
+/// Rounds every channel of RGBA8 `texels` to `bits` bits ([r, g, b, a], 8 leaves a
+/// channel alone) and widens it back, as a texture stored at that precision reads
+/// (`OES_required_internalformat`'s 16-bit and luminance-4 formats).
+pub fn requantize(texels: &mut [u32], bits: [u32; 4]) {
+    for t in texels {
+        let b = t.to_le_bytes();
+        let q: [u8; 4] = std::array::from_fn(|c| {
+            let n = bits[c];
+            if n >= 8 {
+                return b[c];
+            }
+            let max = (1u32 << n) - 1;
+            expand_to_8((b[c] as u32 * max + 127) / 255, n)
+        });
+        *t = u32::from_le_bytes(q);
+    }
 }
 
 /// Replaces levels 1 .. of `chain` with box-filtered reductions of its level 0.
@@ -358,6 +410,12 @@ pub struct Texture {
     /// POSITIVE_X face is `levels`; the other five faces, in the order of the face enums,
     /// are here.
     cube: Option<Box<[Chain; 5]>>,
+    /// The internal formats levels were specified in where the base format does not say
+    /// it all (compressed and sized formats), for the GL layer: (face, level, the image as
+    /// specified, the format's tag). A tag holds only while that very image is the
+    /// level's, so respecifying, generating or clearing a level drops it without
+    /// bookkeeping here. Empty for textures never given such formats.
+    level_tags: Vec<(u8, usize, Weak<Image>, u32)>,
     version: u64,
 }
 
@@ -384,6 +442,7 @@ impl Texture {
             max_level: 1000,
             levels: vec![None; MAX_LEVEL + 1],
             cube: None,
+            level_tags: Vec::new(),
             version: next_generation(),
         }
     }
@@ -422,6 +481,28 @@ impl Texture {
     /// Level `level` of `face` (see [`Texture::chain`] for face numbers).
     pub fn face_level(&self, face: u8, level: usize) -> Option<&Image> {
         self.chain(face)?.get(level)?.as_deref()
+    }
+
+    /// Marks the current image of `face`'s `level` as specified in the internal format
+    /// `tag` (see [`Texture::level_tag`]).
+    pub fn tag_level(&mut self, face: u8, level: usize, tag: u32) {
+        let Some(img) = self.chain(face).and_then(|c| c.get(level)?.as_ref()) else {
+            return;
+        };
+        let img = Arc::downgrade(img);
+        self.level_tags
+            .retain(|(f, l, i, _)| (*f, *l) != (face, level) && i.strong_count() > 0);
+        self.level_tags.push((face, level, img, tag));
+    }
+
+    /// The tag [`Texture::tag_level`] gave `face`'s `level`, while that image is still the
+    /// level's; `None` for a level specified otherwise.
+    pub fn level_tag(&self, face: u8, level: usize) -> Option<u32> {
+        let img = self.chain(face)?.get(level)?.as_ref()?;
+        self.level_tags
+            .iter()
+            .find(|(f, l, i, _)| (*f, *l) == (face, level) && Weak::ptr_eq(i, &Arc::downgrade(img)))
+            .map(|e| e.3)
     }
 
     /// [`Texture::store_rendered`] for a face.

@@ -90,7 +90,7 @@ fn fragment_state_defaults_errors_and_queries() {
 
     c.sample_coverage(-1.0, true);
     assert_eq!(floats(&mut c, GL_SAMPLE_COVERAGE_VALUE), [0.0]);
-    c.polygon_offset(1.5, -2.0);
+    c.polygon_offset(1.5, -2.0, 0.0);
     assert_eq!(fixed(&mut c, GL_POLYGON_OFFSET_FACTOR), [0x18000]);
     assert_eq!(ints(&mut c, GL_POLYGON_OFFSET_UNITS), [-2]);
 }

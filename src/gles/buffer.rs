@@ -1,4 +1,4 @@
-//! Buffer objects (ES 1.1 §2.9) and `OES_mapbuffer`.
+//! Buffer objects (ES 1.1 §2.9), `OES_mapbuffer` and `EXT_map_buffer_range`.
 //!
 //! Buffers live in the share group's [`SharedObjects`]; each context keeps its own
 //! `ARRAY_BUFFER` / `ELEMENT_ARRAY_BUFFER` bindings, and every `gl*Pointer` call records the
@@ -23,6 +23,10 @@ pub struct Buffer {
     data: Vec<u8>,
     pub usage: GLenum,
     mapped: bool,
+    /// The mapped range (offset, length) and its access bits (`EXT_map_buffer_range`;
+    /// `glMapBufferOES` maps everything for writing).
+    map_range: (usize, usize),
+    map_access: GLbitfield,
 }
 
 impl Default for Buffer {
@@ -31,9 +35,19 @@ impl Default for Buffer {
             data: Vec::new(),
             usage: GL_STATIC_DRAW,
             mapped: false,
+            map_range: (0, 0),
+            map_access: 0,
         }
     }
 }
+
+/// Every access bit `glMapBufferRangeEXT` knows.
+const MAP_BITS: GLbitfield = GL_MAP_READ_BIT_EXT
+    | GL_MAP_WRITE_BIT_EXT
+    | GL_MAP_INVALIDATE_RANGE_BIT_EXT
+    | GL_MAP_INVALIDATE_BUFFER_BIT_EXT
+    | GL_MAP_FLUSH_EXPLICIT_BIT_EXT
+    | GL_MAP_UNSYNCHRONIZED_BIT_EXT;
 
 impl Buffer {
     pub fn data(&self) -> &[u8] {
@@ -232,7 +246,89 @@ impl Context {
             return None;
         }
         b.mapped = true;
+        b.map_range = (0, b.data.len());
+        b.map_access = GL_MAP_WRITE_BIT_EXT;
         Some(b.data.as_mut_ptr())
+    }
+
+    /// `glMapBufferRangeEXT`: a pointer to `length` bytes at `offset` of the bound buffer's
+    /// store (which never moves while mapped). The store is always readable and keeps its
+    /// contents, so the invalidate and unsynchronized bits change nothing here.
+    pub fn map_buffer_range(
+        &mut self,
+        target: GLenum,
+        offset: isize,
+        length: isize,
+        access: GLbitfield,
+    ) -> Option<*mut u8> {
+        if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        let read = access & GL_MAP_READ_BIT_EXT != 0;
+        let write = access & GL_MAP_WRITE_BIT_EXT != 0;
+        let read_only_conflict = GL_MAP_INVALIDATE_RANGE_BIT_EXT
+            | GL_MAP_INVALIDATE_BUFFER_BIT_EXT
+            | GL_MAP_UNSYNCHRONIZED_BIT_EXT;
+        if offset < 0 || length < 0 || access & !MAP_BITS != 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let bound = self.bound_buffer(target)?;
+        let mut o = self.objects();
+        let b = o.buffers.get_mut(&bound).expect("bound objects live");
+        let (offset, length) = (offset as usize, length as usize);
+        let error = if offset
+            .checked_add(length)
+            .is_none_or(|end| end > b.data.len())
+        {
+            Some(GL_INVALID_VALUE)
+        } else if b.mapped
+            || length == 0
+            || !(read || write)
+            || (read && access & read_only_conflict != 0)
+            || (!write && access & GL_MAP_FLUSH_EXPLICIT_BIT_EXT != 0)
+        {
+            Some(GL_INVALID_OPERATION)
+        } else {
+            None
+        };
+        if let Some(e) = error {
+            drop(o);
+            self.set_error(e);
+            return None;
+        }
+        b.mapped = true;
+        b.map_range = (offset, length);
+        b.map_access = access;
+        Some(b.data[offset..].as_mut_ptr())
+    }
+
+    /// `glFlushMappedBufferRangeEXT`: the store is the mapping, so flushing only validates
+    /// (a range within the mapping, a mapping made with `GL_MAP_FLUSH_EXPLICIT_BIT_EXT`).
+    pub fn flush_mapped_buffer_range(&mut self, target: GLenum, offset: isize, length: isize) {
+        if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if offset < 0 || length < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let Some(bound) = self.bound_buffer(target) else {
+            return;
+        };
+        let o = self.objects();
+        let b = o.buffers.get(&bound).expect("bound objects live");
+        let error = if !b.mapped || b.map_access & GL_MAP_FLUSH_EXPLICIT_BIT_EXT == 0 {
+            Some(GL_INVALID_OPERATION)
+        } else if (offset as usize).saturating_add(length as usize) > b.map_range.1 {
+            Some(GL_INVALID_VALUE)
+        } else {
+            None
+        };
+        drop(o);
+        if let Some(e) = error {
+            self.set_error(e);
+        }
     }
 
     /// `glUnmapBufferOES`: true unless the buffer was not mapped (`GL_INVALID_OPERATION`).
@@ -268,7 +364,7 @@ impl Context {
         let mut o = self.objects();
         let b = o.buffers.get_mut(&bound).expect("bound objects live");
         Some(if b.mapped {
-            b.data.as_mut_ptr()
+            b.data[b.map_range.0..].as_mut_ptr()
         } else {
             std::ptr::null_mut()
         })
@@ -310,8 +406,7 @@ mod tests {
     fn ranges_are_bounds_checked() {
         let b = Buffer {
             data: vec![1, 2, 3, 4],
-            usage: GL_STATIC_DRAW,
-            mapped: false,
+            ..Buffer::default()
         };
         assert_eq!(b.range(1, 3), Some(&[2, 3, 4][..]));
         assert_eq!(b.range(4, 0), Some(&[][..]));

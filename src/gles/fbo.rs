@@ -50,6 +50,9 @@ pub enum RenderbufferKind {
     Color(ColorFormat),
     Depth(DepthFormat),
     Stencil,
+    /// `OES_packed_depth_stencil`: 24-bit depth and 8-bit stencil in one renderbuffer,
+    /// attachable to both points.
+    DepthStencil,
 }
 
 /// A renderbuffer: its internal format, size and storage (color words as a [`Target`]
@@ -92,6 +95,7 @@ pub fn renderbuffer_kind(internal_format: GLenum) -> Option<RenderbufferKind> {
         GL_DEPTH_COMPONENT16_OES => Depth(DepthFormat::D16),
         GL_DEPTH_COMPONENT24_OES => Depth(DepthFormat::D24),
         GL_STENCIL_INDEX8_OES => Stencil,
+        GL_DEPTH24_STENCIL8_OES => DepthStencil,
         _ => return None,
     })
 }
@@ -110,6 +114,7 @@ impl Renderbuffer {
             }
             RenderbufferKind::Depth(d) => [0, 0, 0, 0, d.bits(), 0],
             RenderbufferKind::Stencil => [0, 0, 0, 0, 0, 8],
+            RenderbufferKind::DepthStencil => [0, 0, 0, 0, 24, 8],
         }
     }
 }
@@ -255,7 +260,10 @@ fn image_info(
             let p = match (rb.kind, point) {
                 (RenderbufferKind::Color(c), COLOR) => Provides::Color(c),
                 (RenderbufferKind::Depth(d), DEPTH) => Provides::Depth(d),
-                (RenderbufferKind::Stencil, STENCIL) => Provides::Stencil,
+                (RenderbufferKind::Stencil | RenderbufferKind::DepthStencil, STENCIL) => {
+                    Provides::Stencil
+                }
+                (RenderbufferKind::DepthStencil, DEPTH) => Provides::Depth(DepthFormat::D24),
                 _ => return None,
             };
             Some((rb.width, rb.height, rb.version, p))
@@ -699,6 +707,9 @@ impl Context {
             }
             RenderbufferKind::Depth(d) => try_filled(n, d.max()).map(|w| (w, Vec::new())),
             RenderbufferKind::Stencil => try_filled(n, 0).map(|b| (Vec::new(), b)),
+            RenderbufferKind::DepthStencil => {
+                try_filled(n, DepthFormat::D24.max()).and_then(|w| Some((w, try_filled(n, 0)?)))
+            }
         };
         let Some((words, bytes)) = storage else {
             return self.set_error(GL_OUT_OF_MEMORY);

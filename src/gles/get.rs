@@ -143,6 +143,17 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_vertex_array_object",
     "GL_APPLE_texture_max_level",
     "GL_EXT_blend_minmax",
+    "GL_OES_texture_npot",
+    "GL_APPLE_texture_2D_limited_npot",
+    "GL_IMG_texture_compression_pvrtc",
+    "GL_EXT_texture_compression_dxt1",
+    "GL_ANGLE_texture_compression_dxt3",
+    "GL_ANGLE_texture_compression_dxt5",
+    "GL_EXT_compressed_ETC1_RGB8_sub_texture",
+    "GL_EXT_map_buffer_range",
+    "GL_EXT_polygon_offset_clamp",
+    "GL_OES_required_internalformat",
+    "GL_OES_packed_depth_stencil",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.

@@ -41,6 +41,8 @@ pub struct FragmentState {
     pub sample_coverage_invert: bool,
     pub polygon_offset_factor: f32,
     pub polygon_offset_units: f32,
+    /// `EXT_polygon_offset_clamp`.
+    pub polygon_offset_clamp: f32,
 }
 
 impl Default for FragmentState {
@@ -65,6 +67,7 @@ impl Default for FragmentState {
             sample_coverage_invert: false,
             polygon_offset_factor: 0.0,
             polygon_offset_units: 0.0,
+            polygon_offset_clamp: 0.0,
         }
     }
 }
@@ -199,9 +202,12 @@ impl Context {
         self.fragment.sample_coverage_invert = invert;
     }
 
-    pub fn polygon_offset(&mut self, factor: f32, units: f32) {
+    /// `glPolygonOffset`, which is `glPolygonOffsetClampEXT` with clamp 0
+    /// (`EXT_polygon_offset_clamp`).
+    pub fn polygon_offset(&mut self, factor: f32, units: f32, clamp: f32) {
         self.fragment.polygon_offset_factor = factor;
         self.fragment.polygon_offset_units = units;
+        self.fragment.polygon_offset_clamp = clamp;
     }
 
     /// The stencil reference value clamped to the draw surface's stencil range.
@@ -237,6 +243,7 @@ impl Context {
             GL_SAMPLE_COVERAGE_INVERT => Value::bools(&[s.sample_coverage_invert]),
             GL_POLYGON_OFFSET_FACTOR => Value::floats(&[s.polygon_offset_factor]),
             GL_POLYGON_OFFSET_UNITS => Value::floats(&[s.polygon_offset_units]),
+            GL_POLYGON_OFFSET_CLAMP_EXT => Value::floats(&[s.polygon_offset_clamp]),
             _ => return None,
         })
     }
@@ -326,6 +333,7 @@ impl Context {
         rs.polygon_offset = e.polygon_offset_fill.then_some(PolygonOffset {
             factor: s.polygon_offset_factor,
             units: s.polygon_offset_units,
+            clamp: s.polygon_offset_clamp,
         });
     }
 }

@@ -12,6 +12,8 @@
 //! it. [`Texture::version`] changes with each change, for caches that want to notice.
 
 use crate::core::fixed;
+use crate::core::texture::pvrtc::PvrtcFormat;
+use crate::core::texture::s3tc::S3tcFormat;
 use crate::core::texture::{
     convert_word, BaseFormat, Image, MagFilter, MinFilter, PaletteEntry, PaletteFormat, PixelRect,
     PixelType, Texture, Wrap, MAX_LEVEL, MAX_TEXTURE_SIZE,
@@ -89,7 +91,7 @@ impl Default for TextureUnits {
 }
 
 /// The compressed formats `glGetIntegerv(GL_COMPRESSED_TEXTURE_FORMATS)` lists.
-pub const COMPRESSED_FORMATS: [GLenum; 11] = [
+pub const COMPRESSED_FORMATS: [GLenum; 19] = [
     GL_PALETTE4_RGB8_OES,
     GL_PALETTE4_RGBA8_OES,
     GL_PALETTE4_R5_G6_B5_OES,
@@ -101,7 +103,63 @@ pub const COMPRESSED_FORMATS: [GLenum; 11] = [
     GL_PALETTE8_RGBA4_OES,
     GL_PALETTE8_RGB5_A1_OES,
     GL_ETC1_RGB8_OES,
+    GL_COMPRESSED_RGB_PVRTC_4BPPV1_IMG,
+    GL_COMPRESSED_RGB_PVRTC_2BPPV1_IMG,
+    GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG,
+    GL_COMPRESSED_RGBA_PVRTC_2BPPV1_IMG,
+    GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
+    GL_COMPRESSED_RGBA_S3TC_DXT1_EXT,
+    GL_COMPRESSED_RGBA_S3TC_DXT3_ANGLE,
+    GL_COMPRESSED_RGBA_S3TC_DXT5_ANGLE,
 ];
+
+/// `OES_required_internalformat`: a sized internal format's base format, the bits it
+/// keeps per channel ([r, g, b, a]; luminance in r, g and b) and the packed client type
+/// it takes besides `GL_UNSIGNED_BYTE`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SizedFormat {
+    pub internal: GLenum,
+    pub base: BaseFormat,
+    pub bits: [u32; 4],
+    packed: Option<GLenum>,
+}
+
+pub fn sized_format(internal: GLenum) -> Option<SizedFormat> {
+    use BaseFormat::*;
+    let (base, bits, packed) = match internal {
+        GL_ALPHA8_OES => (Alpha, [8; 4], None),
+        GL_LUMINANCE8_OES => (Luminance, [8; 4], None),
+        GL_LUMINANCE8_ALPHA8_OES => (LuminanceAlpha, [8; 4], None),
+        GL_LUMINANCE4_ALPHA4_OES => (LuminanceAlpha, [4; 4], None),
+        GL_RGB8_OES => (Rgb, [8; 4], None),
+        GL_RGBA8_OES => (Rgba, [8; 4], None),
+        GL_RGB565_OES => (Rgb, [5, 6, 5, 8], Some(GL_UNSIGNED_SHORT_5_6_5)),
+        GL_RGBA4_OES => (Rgba, [4; 4], Some(GL_UNSIGNED_SHORT_4_4_4_4)),
+        GL_RGB5_A1_OES => (Rgba, [5, 5, 5, 1], Some(GL_UNSIGNED_SHORT_5_5_5_1)),
+        _ => return None,
+    };
+    Some(SizedFormat {
+        internal,
+        base,
+        bits,
+        packed,
+    })
+}
+
+impl SizedFormat {
+    /// Whether client data of `format` and `ty` may specify it (the extension's table: the
+    /// base format's own enum, with unsigned bytes or the format's packed type).
+    fn takes(&self, format: GLenum, ty: GLenum) -> bool {
+        format == base_format_enum(self.base) && (ty == GL_UNSIGNED_BYTE || Some(ty) == self.packed)
+    }
+
+    /// Rounds texels to the format's precision (nothing for the 8-bit formats).
+    fn store(&self, texels: &mut [u32]) {
+        if self.bits != [8; 4] {
+            crate::core::texture::requantize(texels, self.bits);
+        }
+    }
+}
 
 /// The compressed formats `glCompressedTexImage2D` takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -109,6 +167,51 @@ pub enum Compressed {
     Palette(PaletteFormat),
     /// `OES_compressed_ETC1_RGB8_texture`, decoded to RGB on upload.
     Etc1,
+    /// `IMG_texture_compression_pvrtc`, decoded on upload.
+    Pvrtc(PvrtcFormat),
+    /// `EXT_texture_compression_dxt1`, `ANGLE_texture_compression_dxt3` / `_dxt5`,
+    /// decoded on upload.
+    S3tc(S3tcFormat),
+}
+
+fn pvrtc_format(format: GLenum) -> Option<PvrtcFormat> {
+    let (two_bpp, alpha) = match format {
+        GL_COMPRESSED_RGB_PVRTC_4BPPV1_IMG => (false, false),
+        GL_COMPRESSED_RGB_PVRTC_2BPPV1_IMG => (true, false),
+        GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG => (false, true),
+        GL_COMPRESSED_RGBA_PVRTC_2BPPV1_IMG => (true, true),
+        _ => return None,
+    };
+    Some(PvrtcFormat { two_bpp, alpha })
+}
+
+fn s3tc_format(format: GLenum) -> Option<S3tcFormat> {
+    Some(match format {
+        GL_COMPRESSED_RGB_S3TC_DXT1_EXT => S3tcFormat::Dxt1Rgb,
+        GL_COMPRESSED_RGBA_S3TC_DXT1_EXT => S3tcFormat::Dxt1Rgba,
+        GL_COMPRESSED_RGBA_S3TC_DXT3_ANGLE => S3tcFormat::Dxt3,
+        GL_COMPRESSED_RGBA_S3TC_DXT5_ANGLE => S3tcFormat::Dxt5,
+        _ => return None,
+    })
+}
+
+/// Whether a block-compressed image side is allowed where the extension asks for whole
+/// blocks (`ANGLE_texture_compression_dxt3/5`): a multiple of 4, or 1 or 2 (small mipmap
+/// levels).
+fn whole_blocks(side: i32) -> bool {
+    side % 4 == 0 || side == 1 || side == 2
+}
+
+/// A validated `glCompressedTexSubImage2D` request: the region of a level to decode into.
+#[derive(Clone, Copy, Debug)]
+pub struct CompressedUpdate {
+    face: u8,
+    level: usize,
+    kind: Compressed,
+    x: u32,
+    y: u32,
+    width: u32,
+    height: u32,
 }
 
 /// A validated `glTexImage2D` / `glTexSubImage2D` request: where the texels go and how the
@@ -123,6 +226,9 @@ pub struct TexUpload {
     pub format: BaseFormat,
     pub ty: PixelType,
     pub rect: PixelRect,
+    /// `OES_required_internalformat`: the sized format `glTexImage2D` named (`None` for
+    /// sub-images: the level's own format is looked up when they are written).
+    pub sized: Option<SizedFormat>,
 }
 
 /// The image a `glTexImage2D`-style target names: 0 for `GL_TEXTURE_2D`, 1 ..= 6 for the
@@ -206,14 +312,14 @@ pub fn palette_format(format: GLenum) -> Option<PaletteFormat> {
 }
 
 /// Whether a level-`level` image of `width` × `height` is allowed: level in
-/// 0 ..= log2(max size), sides non-negative, no larger than the level's maximum, and powers
-/// of two (ES 1.1 has no non-power-of-two textures; 0 is allowed).
+/// 0 ..= log2(max size), sides non-negative and no larger than the level's maximum. Any
+/// size is allowed (`OES_texture_npot`; core ES 1.1 would require powers of two).
 pub fn valid_image_size(level: i32, width: i32, height: i32) -> bool {
     if !(0..=MAX_LEVEL as i32).contains(&level) {
         return false;
     }
     let max = (MAX_TEXTURE_SIZE >> level) as i32;
-    let side = |s: i32| s == 0 || ((0..=max).contains(&s) && (s as u32).is_power_of_two());
+    let side = |s: i32| (0..=max).contains(&s);
     side(width) && side(height)
 }
 
@@ -581,19 +687,27 @@ impl Context {
         if face != 0 && width != height {
             return Err(GL_INVALID_VALUE);
         }
+        let sized = u32::try_from(internal_format).ok().and_then(sized_format);
         let internal = u32::try_from(internal_format).ok().and_then(|i| {
             if i == GL_BGRA_EXT {
                 Some(BaseFormat::Rgba)
             } else {
-                base_format(i)
+                base_format(i).or(sized.map(|s| s.base))
             }
         });
         if internal.is_none() || !valid_image_size(level, width, height) || border != 0 {
             return Err(GL_INVALID_VALUE);
         }
-        // The internal format must be the format (BGRA with BGRA).
-        if internal != Some(f) || (internal_format as u32 == GL_BGRA_EXT) != (format == GL_BGRA_EXT)
-        {
+        // The internal format must be the format (BGRA with BGRA), or a sized format that
+        // takes it.
+        let matches = match sized {
+            Some(s) => s.takes(format, ty),
+            None => {
+                internal == Some(f)
+                    && (internal_format as u32 == GL_BGRA_EXT) == (format == GL_BGRA_EXT)
+            }
+        };
+        if !matches {
             return Err(GL_INVALID_OPERATION);
         }
         let size = t.pixel_size(f).ok_or(GL_INVALID_OPERATION)?;
@@ -607,6 +721,7 @@ impl Context {
             format: f,
             ty: t,
             rect,
+            sized,
         })
     }
 
@@ -625,11 +740,19 @@ impl Context {
             }
             None => Image::try_blank(w, h, up.format),
         };
-        let Some(image) = image else {
+        let Some(mut image) = image else {
             return self.set_error(GL_OUT_OF_MEMORY);
         };
+        if let Some(s) = up.sized {
+            s.store(&mut image.texels);
+        }
         self.texture_changing();
-        self.with_face_texture(up.face, |t| t.set_face_level(up.face, up.level, image));
+        self.with_face_texture(up.face, |t| {
+            t.set_face_level(up.face, up.level, image);
+            if let Some(s) = up.sized {
+                t.tag_level(up.face, up.level, s.internal);
+            }
+        });
     }
 
     /// Validates `glTexSubImage2D`'s arguments against the bound texture.
@@ -662,6 +785,7 @@ impl Context {
             format: f,
             ty: t,
             rect,
+            sized: None,
         })
     }
 
@@ -701,9 +825,18 @@ impl Context {
         if w == 0 || h == 0 {
             return;
         }
+        self.write_level_region(up.face, up.level, [up.x, up.y, w, h], texels);
+    }
+
+    /// Writes texels over a region of a level, rounded to the precision of the sized format
+    /// the level was specified in.
+    fn write_level_region(&mut self, face: u8, level: usize, r: [u32; 4], mut texels: Vec<u32>) {
         self.texture_changing();
-        self.with_face_texture(up.face, |t| {
-            t.write_face_region(up.face, up.level, up.x, up.y, w, h, &texels)
+        self.with_face_texture(face, |t| {
+            if let Some(s) = t.level_tag(face, level).and_then(sized_format) {
+                s.store(&mut texels);
+            }
+            t.write_face_region(face, level, r[0], r[1], r[2], r[3], &texels)
         });
     }
 
@@ -736,6 +869,34 @@ impl Context {
             }
             return Ok((Compressed::Etc1, level as usize, face));
         }
+        if let Some(f) = pvrtc_format(internal_format) {
+            // PVRTC1 images are powers of two, whatever OES_texture_npot allows others.
+            let pot = |s: i32| s > 0 && (s as u32).is_power_of_two();
+            if !valid_image_size(level, width, height)
+                || border != 0
+                || image_size < 0
+                || !pot(width)
+                || !pot(height)
+                || image_size as usize != f.image_size(width as u32, height as u32)
+            {
+                return Err(GL_INVALID_VALUE);
+            }
+            return Ok((Compressed::Pvrtc(f), level as usize, face));
+        }
+        if let Some(f) = s3tc_format(internal_format) {
+            if !valid_image_size(level, width, height)
+                || border != 0
+                || image_size < 0
+                || image_size as usize != f.image_size(width as u32, height as u32)
+            {
+                return Err(GL_INVALID_VALUE);
+            }
+            let angle = matches!(f, S3tcFormat::Dxt3 | S3tcFormat::Dxt5);
+            if angle && !(whole_blocks(width) && whole_blocks(height)) {
+                return Err(GL_INVALID_OPERATION);
+            }
+            return Ok((Compressed::S3tc(f), level as usize, face));
+        }
         let Some(f) = palette_format(internal_format) else {
             return Err(GL_INVALID_ENUM);
         };
@@ -760,27 +921,51 @@ impl Context {
     }
 
     /// Specifies levels 0 .. `levels` from a paletted blob (`None`: contents zeroed).
-    /// For ETC1, `levels` is the level number.
+    /// For the other formats, one level: `levels` is its number. `tag` is the format's
+    /// enum, kept with single levels for [`Context::compressed_tex_sub_image_2d`].
+    #[allow(clippy::too_many_arguments)]
     pub fn compressed_tex_image_2d(
         &mut self,
         face: u8,
         format: Compressed,
+        tag: GLenum,
         levels: usize,
         width: i32,
         height: i32,
         data: Option<&[u8]>,
     ) {
         let (w, h) = (width as u32, height as u32);
-        let format = match format {
-            Compressed::Palette(f) => f,
-            Compressed::Etc1 => {
-                let image = data
-                    .and_then(|d| crate::core::texture::decode_etc1(w, h, d))
-                    .unwrap_or_else(|| Image::blank(w, h, BaseFormat::Rgb));
-                self.texture_changing();
-                return self.with_face_texture(face, |t| t.set_face_level(face, levels, image));
-            }
+        let single = |decoded: Option<Image>, base: BaseFormat| {
+            decoded.unwrap_or_else(|| Image::blank(w, h, base))
         };
+        let image = match format {
+            Compressed::Palette(f) => {
+                return self.paletted_tex_image_2d(face, f, levels, w, h, data)
+            }
+            Compressed::Etc1 => single(
+                data.and_then(|d| crate::core::texture::decode_etc1(w, h, d)),
+                BaseFormat::Rgb,
+            ),
+            Compressed::Pvrtc(f) => single(data.and_then(|d| f.decode(w, h, d)), f.base_format()),
+            Compressed::S3tc(f) => single(data.and_then(|d| f.decode(w, h, d)), f.base_format()),
+        };
+        self.texture_changing();
+        self.with_face_texture(face, |t| {
+            t.set_face_level(face, levels, image);
+            t.tag_level(face, levels, tag);
+        });
+    }
+
+    /// Levels 0 .. `levels` from a paletted blob (`None`: contents zeroed).
+    fn paletted_tex_image_2d(
+        &mut self,
+        face: u8,
+        format: PaletteFormat,
+        levels: usize,
+        w: u32,
+        h: u32,
+        data: Option<&[u8]>,
+    ) {
         let images = match data.and_then(|d| format.decode(w, h, levels, d)) {
             Some(images) => images,
             None => {
@@ -810,11 +995,14 @@ impl Context {
         });
     }
 
-    /// `glCompressedTexSubImage2D`: no supported compressed format allows sub-image updates,
-    /// so paletted formats are `GL_INVALID_OPERATION` (ES 1.1 §3.7.3) and anything else
-    /// `GL_INVALID_ENUM`.
+    /// Validates `glCompressedTexSubImage2D`; `Ok` carries what
+    /// [`Context::compressed_tex_sub_image_2d`] needs. Paletted images take no updates
+    /// (ES 1.1 §3.7.3). ETC1 (`EXT_compressed_ETC1_RGB8_sub_texture`) and S3TC update
+    /// whole 4 × 4 blocks: offsets on block boundaries, sizes whole blocks or reaching the
+    /// level's edge. PVRTC replaces whole levels only (offset 0, the level's size). The
+    /// format must be the one the level was specified in.
     #[allow(clippy::too_many_arguments)]
-    pub fn compressed_tex_sub_image_2d(
+    pub fn compressed_tex_sub_image_2d_check(
         &mut self,
         target: GLenum,
         level: i32,
@@ -824,12 +1012,19 @@ impl Context {
         height: i32,
         format: GLenum,
         image_size: i32,
-    ) {
-        if image_target(target).is_none()
-            || (palette_format(format).is_none() && format != GL_ETC1_RGB8_OES)
-        {
-            return self.set_error(GL_INVALID_ENUM);
-        }
+    ) -> Result<CompressedUpdate, GLenum> {
+        let face = image_target(target).ok_or(GL_INVALID_ENUM)?;
+        let kind = if format == GL_ETC1_RGB8_OES {
+            Compressed::Etc1
+        } else if let Some(f) = pvrtc_format(format) {
+            Compressed::Pvrtc(f)
+        } else if let Some(f) = s3tc_format(format) {
+            Compressed::S3tc(f)
+        } else if let Some(f) = palette_format(format) {
+            Compressed::Palette(f)
+        } else {
+            return Err(GL_INVALID_ENUM);
+        };
         if !(0..=MAX_LEVEL as i32).contains(&level)
             || x < 0
             || y < 0
@@ -837,9 +1032,88 @@ impl Context {
             || height < 0
             || image_size < 0
         {
-            return self.set_error(GL_INVALID_VALUE);
+            return Err(GL_INVALID_VALUE);
         }
-        self.set_error(GL_INVALID_OPERATION);
+        let level = level as usize;
+        let (lw, lh, tag) = self
+            .with_face_texture(face, |t| {
+                let img = t.face_level(face, level)?;
+                Some((
+                    img.width as i64,
+                    img.height as i64,
+                    t.level_tag(face, level),
+                ))
+            })
+            .ok_or(GL_INVALID_OPERATION)?;
+        if matches!(kind, Compressed::Palette(_)) || tag != Some(format) {
+            return Err(GL_INVALID_OPERATION);
+        }
+        let (x64, y64, w64, h64) = (x as i64, y as i64, width as i64, height as i64);
+        if x64 + w64 > lw || y64 + h64 > lh {
+            return Err(GL_INVALID_VALUE);
+        }
+        let (w, h) = (width as u32, height as u32);
+        let size = match kind {
+            Compressed::Pvrtc(f) => {
+                if (x, y, w64, h64) != (0, 0, lw, lh) {
+                    return Err(GL_INVALID_VALUE);
+                }
+                f.image_size(w, h)
+            }
+            Compressed::S3tc(f) => f.image_size(w, h),
+            _ => crate::core::texture::etc1_size(w, h),
+        };
+        if !matches!(kind, Compressed::Pvrtc(_)) {
+            let fits = |o: i64, n: i64, edge: i64| o % 4 == 0 && (n % 4 == 0 || o + n == edge);
+            if !fits(x64, w64, lw) || !fits(y64, h64, lh) {
+                return Err(GL_INVALID_OPERATION);
+            }
+        }
+        if image_size as usize != size {
+            return Err(GL_INVALID_VALUE);
+        }
+        Ok(CompressedUpdate {
+            face,
+            level,
+            kind,
+            x: x as u32,
+            y: y as u32,
+            width: w,
+            height: h,
+        })
+    }
+
+    /// `glCompressedTexSubImage2D` after [`Context::compressed_tex_sub_image_2d_check`]:
+    /// decodes `data` and writes it over the level's region (PVRTC: replaces the level,
+    /// keeping its tag).
+    pub fn compressed_tex_sub_image_2d(&mut self, up: CompressedUpdate, data: Option<&[u8]>) {
+        let Some(data) = data else {
+            return;
+        };
+        let (w, h) = (up.width, up.height);
+        let decoded = match up.kind {
+            Compressed::Pvrtc(f) => f.decode(w, h, data),
+            Compressed::S3tc(f) => f.decode(w, h, data),
+            _ => crate::core::texture::decode_etc1(w, h, data),
+        };
+        let Some(image) = decoded else {
+            return;
+        };
+        if w == 0 || h == 0 {
+            return;
+        }
+        self.texture_changing();
+        self.with_face_texture(up.face, |t| {
+            let tag = t.level_tag(up.face, up.level);
+            if matches!(up.kind, Compressed::Pvrtc(_)) {
+                t.set_face_level(up.face, up.level, image);
+                if let Some(tag) = tag {
+                    t.tag_level(up.face, up.level, tag);
+                }
+            } else {
+                t.write_face_region(up.face, up.level, up.x, up.y, w, h, &image.texels);
+            }
+        });
     }
 
     /// The read surface's color format, flushing its pending rendering first.
@@ -869,7 +1143,8 @@ impl Context {
         let Some(face) = image_target(target) else {
             return self.set_error(GL_INVALID_ENUM);
         };
-        let Some(format) = base_format(internal_format) else {
+        let sized = sized_format(internal_format);
+        let Some(format) = base_format(internal_format).or(sized.map(|s| s.base)) else {
             return self.set_error(GL_INVALID_ENUM);
         };
         if !valid_image_size(level, width, height) || border != 0 || (face != 0 && width != height)
@@ -891,9 +1166,12 @@ impl Context {
             height as u32,
             format,
         );
-        let Some(texels) = texels else {
+        let Some(mut texels) = texels else {
             return self.set_error(GL_OUT_OF_MEMORY);
         };
+        if let Some(s) = sized {
+            s.store(&mut texels);
+        }
         let image = Image {
             width: width as u32,
             height: height as u32,
@@ -901,7 +1179,12 @@ impl Context {
             texels,
         };
         self.texture_changing();
-        self.with_face_texture(face, |t| t.set_face_level(face, level as usize, image));
+        self.with_face_texture(face, |t| {
+            t.set_face_level(face, level as usize, image);
+            if let Some(s) = sized {
+                t.tag_level(face, level as usize, s.internal);
+            }
+        });
     }
 
     /// `glCopyTexSubImage2D`.
@@ -945,18 +1228,8 @@ impl Context {
         let Some(texels) = texels else {
             return self.set_error(GL_OUT_OF_MEMORY);
         };
-        self.texture_changing();
-        self.with_face_texture(face, |t| {
-            t.write_face_region(
-                face,
-                level as usize,
-                xoffset as u32,
-                yoffset as u32,
-                width as u32,
-                height as u32,
-                &texels,
-            )
-        });
+        let region = [xoffset as u32, yoffset as u32, width as u32, height as u32];
+        self.write_level_region(face, level as usize, region, texels);
     }
 
     /// The texture state `glGet*` reports.
@@ -1025,11 +1298,13 @@ mod tests {
     use super::*;
 
     #[test]
-    fn image_sizes_must_be_powers_of_two_within_the_level() {
+    fn image_sizes_must_fit_the_level() {
         assert!(valid_image_size(0, 0, 0));
         assert!(valid_image_size(0, 1, 2048));
         assert!(!valid_image_size(0, 4096, 1));
-        assert!(!valid_image_size(0, 3, 4));
+        assert!(valid_image_size(0, 3, 300));
+        assert!(valid_image_size(1, 1023, 1));
+        assert!(!valid_image_size(1, 1025, 1));
         assert!(!valid_image_size(0, -1, 4));
         assert!(valid_image_size(1, 1024, 1024));
         assert!(!valid_image_size(1, 2048, 1));

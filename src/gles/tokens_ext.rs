@@ -192,3 +192,58 @@ pub const GL_TEXTURE_MAX_LEVEL_APPLE: GLenum = 0x813D;
 // Blend equations taking the smaller or larger of source and destination.
 pub const GL_MIN_EXT: GLenum = 0x8007;
 pub const GL_MAX_EXT: GLenum = 0x8008;
+
+// Extension: GL_OES_texture_npot
+// Textures of any width and height, with mipmaps and every wrap mode.
+
+// Extension: GL_APPLE_texture_2D_limited_npot
+// Non-power-of-two 2D textures (contained in GL_OES_texture_npot, which is also listed).
+
+// Extension: GL_IMG_texture_compression_pvrtc
+// PVRTC1 compressed textures at 4 and 2 bits per pixel, decoded on upload.
+pub const GL_COMPRESSED_RGB_PVRTC_4BPPV1_IMG: GLenum = 0x8C00;
+pub const GL_COMPRESSED_RGB_PVRTC_2BPPV1_IMG: GLenum = 0x8C01;
+pub const GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG: GLenum = 0x8C02;
+pub const GL_COMPRESSED_RGBA_PVRTC_2BPPV1_IMG: GLenum = 0x8C03;
+
+// Extension: GL_EXT_texture_compression_dxt1
+// S3TC DXT1 compressed textures, decoded on upload.
+pub const GL_COMPRESSED_RGB_S3TC_DXT1_EXT: GLenum = 0x83F0;
+pub const GL_COMPRESSED_RGBA_S3TC_DXT1_EXT: GLenum = 0x83F1;
+
+// Extension: GL_ANGLE_texture_compression_dxt3
+// S3TC DXT3 compressed textures (explicit alpha), decoded on upload.
+pub const GL_COMPRESSED_RGBA_S3TC_DXT3_ANGLE: GLenum = 0x83F2;
+
+// Extension: GL_ANGLE_texture_compression_dxt5
+// S3TC DXT5 compressed textures (interpolated alpha), decoded on upload.
+pub const GL_COMPRESSED_RGBA_S3TC_DXT5_ANGLE: GLenum = 0x83F3;
+
+// Extension: GL_EXT_compressed_ETC1_RGB8_sub_texture
+// glCompressedTexSubImage2D for ETC1 images, on 4 × 4 block boundaries.
+
+// Extension: GL_EXT_map_buffer_range
+// Mapping a range of a buffer object with access flags (glMapBufferRangeEXT).
+pub const GL_MAP_READ_BIT_EXT: GLbitfield = 0x0001;
+pub const GL_MAP_WRITE_BIT_EXT: GLbitfield = 0x0002;
+pub const GL_MAP_INVALIDATE_RANGE_BIT_EXT: GLbitfield = 0x0004;
+pub const GL_MAP_INVALIDATE_BUFFER_BIT_EXT: GLbitfield = 0x0008;
+pub const GL_MAP_FLUSH_EXPLICIT_BIT_EXT: GLbitfield = 0x0010;
+pub const GL_MAP_UNSYNCHRONIZED_BIT_EXT: GLbitfield = 0x0020;
+
+// Extension: GL_EXT_polygon_offset_clamp
+// A bound on the polygon offset's magnitude (glPolygonOffsetClampEXT).
+pub const GL_POLYGON_OFFSET_CLAMP_EXT: GLenum = 0x8E1B;
+
+// Extension: GL_OES_required_internalformat
+// Sized internal formats for glTexImage2D and glCopyTexImage2D, stored at their precision (the RGB8, RGBA8, RGB565, RGBA4 and RGB5_A1 tokens are listed with the extensions that introduced them).
+pub const GL_ALPHA8_OES: GLenum = 0x803C;
+pub const GL_LUMINANCE8_OES: GLenum = 0x8040;
+pub const GL_LUMINANCE4_ALPHA4_OES: GLenum = 0x8043;
+pub const GL_LUMINANCE8_ALPHA8_OES: GLenum = 0x8045;
+
+// Extension: GL_OES_packed_depth_stencil
+// A renderbuffer of 24-bit depth and 8-bit stencil, attachable to both points (depth-stencil textures need OES_depth_texture, which is not offered).
+pub const GL_DEPTH_STENCIL_OES: GLenum = 0x84F9;
+pub const GL_UNSIGNED_INT_24_8_OES: GLenum = 0x84FA;
+pub const GL_DEPTH24_STENCIL8_OES: GLenum = 0x88F0;

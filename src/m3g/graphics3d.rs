@@ -1040,6 +1040,7 @@ fn apply_compositing(s: &mut RenderState, cm: Option<&CompositingMode>, depth: b
             s.polygon_offset = Some(crate::core::state::PolygonOffset {
                 factor: offset[0],
                 units: offset[1],
+                clamp: 0.0,
             });
         }
     } else {

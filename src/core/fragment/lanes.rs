@@ -723,27 +723,72 @@ fn st_lanes(ts: &TexSpan, i0: usize) -> (Lane<f32>, Lane<f32>, Lane<f32>) {
 /// Wrapped texel indices of integer coordinates (`Wrap::index`, one decision per group).
 #[inline(always)]
 fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
+    if n & (n - 1) != 0 {
+        // `OES_texture_npot`: a division per lane, off the power-of-two routes.
+        i.iter_mut().for_each(|i| *i = wrap.index_npot(*i, n));
+        return;
+    }
     // One match per group: `wrap` is the same for every lane.
     match wrap {
-        Wrap::Repeat => i.iter_mut().for_each(|i| *i = Wrap::Repeat.index(*i, n)),
+        Wrap::Repeat => i
+            .iter_mut()
+            .for_each(|i| *i = Wrap::Repeat.index_pot(*i, n)),
         Wrap::ClampToEdge => i
             .iter_mut()
-            .for_each(|i| *i = Wrap::ClampToEdge.index(*i, n)),
+            .for_each(|i| *i = Wrap::ClampToEdge.index_pot(*i, n)),
         Wrap::MirroredRepeat => i
             .iter_mut()
-            .for_each(|i| *i = Wrap::MirroredRepeat.index(*i, n)),
+            .for_each(|i| *i = Wrap::MirroredRepeat.index_pot(*i, n)),
+    }
+}
+
+/// How a level's rows are addressed: by a shift where the width is a power of two (SSE2
+/// has no 32-bit vector multiply), else by multiplying with the width (`OES_texture_npot`).
+#[derive(Clone, Copy)]
+enum Rows {
+    Shift(u32),
+    Width(i32),
+}
+
+impl Rows {
+    fn of(width: u32) -> Rows {
+        if width.is_power_of_two() {
+            Rows::Shift(width.trailing_zeros())
+        } else {
+            Rows::Width(width as i32)
+        }
+    }
+
+    /// The slice indices of wrapped (x, y).
+    #[inline(always)]
+    fn indices(self, x: &Lane<i32>, y: &Lane<i32>) -> Lane<usize> {
+        let mut k = [0; LANES];
+        match self {
+            Rows::Shift(shift) => {
+                for j in 0..LANES {
+                    k[j] = (y[j] << shift | x[j]) as u32 as usize;
+                }
+            }
+            Rows::Width(w) => {
+                for j in 0..LANES {
+                    k[j] = (y[j] * w + x[j]) as u32 as usize;
+                }
+            }
+        }
+        k
     }
 }
 
 /// The texel words at wrapped (x, y) of a level with at least one texel.
 #[inline(always)]
-fn fetch(texels: &[u32], shift: u32, x: &Lane<i32>, y: &Lane<i32>) -> Lane<u32> {
+fn fetch(texels: &[u32], rows: Rows, x: &Lane<i32>, y: &Lane<i32>) -> Lane<u32> {
     // Wrapped coordinates are inside the level; clamping to the slice's last index lets
     // the compiler drop the per-lane bounds check.
     let last = texels.len() - 1;
+    let k = rows.indices(x, y);
     let mut words = [0; LANES];
     for j in 0..LANES {
-        words[j] = texels[((y[j] << shift | x[j]) as u32 as usize).min(last)];
+        words[j] = texels[k[j].min(last)];
     }
     words
 }
@@ -752,12 +797,13 @@ fn fetch(texels: &[u32], shift: u32, x: &Lane<i32>, y: &Lane<i32>) -> Lane<u32> 
 /// lanes whose x + 1 does not wrap: one 8-byte load per lane where the compiler merges the
 /// two adjacent reads.
 #[inline(always)]
-fn fetch_pairs(texels: &[u32], shift: u32, x: &Lane<i32>, y: &Lane<i32>) -> (Lane<u32>, Lane<u32>) {
+fn fetch_pairs(texels: &[u32], rows: Rows, x: &Lane<i32>, y: &Lane<i32>) -> (Lane<u32>, Lane<u32>) {
     // As in `fetch`, the clamp only lets the compiler drop the bounds checks.
     let last = texels.len() - 2;
+    let ks = rows.indices(x, y);
     let (mut left, mut right) = ([0; LANES], [0; LANES]);
     for j in 0..LANES {
-        let k = ((y[j] << shift | x[j]) as u32 as usize).min(last);
+        let k = ks[j].min(last);
         let pair = u64::from(texels[k]) | u64::from(texels[k + 1]) << 32;
         left[j] = pair as u32;
         right[j] = (pair >> 32) as u32;
@@ -819,10 +865,9 @@ fn sample_level(
         a[j] = u[j] - fu;
         b[j] = v[j] - fv;
     }
-    // Levels are powers of two wide: a shift instead of a multiply (SSE2 has no 32-bit
-    // vector multiply). A complete texture has no empty level; an empty one samples as
-    // zero rather than panicking.
-    let (texels, shift) = (&img.texels[..], img.width.trailing_zeros());
+    // A complete texture has no empty level; an empty one samples as zero rather than
+    // panicking.
+    let (texels, rows) = (&img.texels[..], Rows::of(img.width));
     if texels.is_empty() {
         *out = [[0.0; LANES]; 4];
         return true;
@@ -836,7 +881,7 @@ fn sample_level(
     if !linear || (flat_s && flat_t) {
         wrap_lanes(sm.wrap_s, &mut i, wi);
         wrap_lanes(sm.wrap_t, &mut jj, hi);
-        let words = fetch(texels, shift, &i, &jj);
+        let words = fetch(texels, rows, &i, &jj);
         for (c, out) in out.iter_mut().enumerate().take(channel_count()) {
             *out = scaled(unpack(&words, c), scale);
         }
@@ -854,26 +899,23 @@ fn sample_level(
         adjacent &= i1[j] == i[j].wrapping_add(1);
     }
     let (w00, w10, w01, w11) = if adjacent && !flat_s && !flat_t {
-        let (w00, w10) = fetch_pairs(texels, shift, &i, &jj);
-        let (w01, w11) = fetch_pairs(texels, shift, &i, &j1);
+        let (w00, w10) = fetch_pairs(texels, rows, &i, &jj);
+        let (w01, w11) = fetch_pairs(texels, rows, &i, &j1);
         (w00, w10, w01, w11)
     } else {
-        let w00 = fetch(texels, shift, &i, &jj);
+        let w00 = fetch(texels, rows, &i, &jj);
         let w10 = if flat_s {
             w00
         } else {
-            fetch(texels, shift, &i1, &jj)
+            fetch(texels, rows, &i1, &jj)
         };
         let (w01, w11) = if flat_t {
             (w00, w10)
         } else if flat_s {
-            let w01 = fetch(texels, shift, &i, &j1);
+            let w01 = fetch(texels, rows, &i, &j1);
             (w01, w01)
         } else {
-            (
-                fetch(texels, shift, &i, &j1),
-                fetch(texels, shift, &i1, &j1),
-            )
+            (fetch(texels, rows, &i, &j1), fetch(texels, rows, &i1, &j1))
         };
         (w00, w10, w01, w11)
     };

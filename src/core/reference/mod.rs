@@ -262,7 +262,7 @@ fn triangle(state: &RenderState, v: [Vtx; 3], flat_color: DVec4, target: &mut Ta
             let dzdy = ((win[2].2 - win[0].2) * (win[1].0 - win[0].0)
                 - (win[1].2 - win[0].2) * (win[2].0 - win[0].0))
                 / area;
-            o.factor as f64 * dzdx.abs().max(dzdy.abs()) + o.units as f64 / df.max() as f64
+            o.offset(dzdx.abs().max(dzdy.abs()), df.max() as f64)
         }
         _ => 0.0,
     };

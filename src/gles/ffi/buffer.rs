@@ -119,3 +119,27 @@ pub unsafe extern "C" fn glGetBufferPointervOES(
         }
     })
 }
+
+/// `EXT_map_buffer_range`: `length` bytes at `offset` of the bound buffer, or null after an
+/// error.
+#[no_mangle]
+pub extern "C" fn glMapBufferRangeEXT(
+    target: GLenum,
+    offset: GLintptr,
+    length: GLsizeiptr,
+    access: GLbitfield,
+) -> *mut GLvoid {
+    with_context(std::ptr::null_mut(), |c| {
+        c.map_buffer_range(target, offset, length, access)
+            .map_or(std::ptr::null_mut(), |p| p as *mut GLvoid)
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn glFlushMappedBufferRangeEXT(
+    target: GLenum,
+    offset: GLintptr,
+    length: GLsizeiptr,
+) {
+    with_context((), |c| c.flush_mapped_buffer_range(target, offset, length))
+}

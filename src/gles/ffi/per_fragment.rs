@@ -70,10 +70,16 @@ pub extern "C" fn glSampleCoveragex(value: GLclampx, invert: GLboolean) {
 
 #[no_mangle]
 pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
-    with_context((), |c| c.polygon_offset(factor, units))
+    with_context((), |c| c.polygon_offset(factor, units, 0.0))
 }
 
 #[no_mangle]
 pub extern "C" fn glPolygonOffsetx(factor: GLfixed, units: GLfixed) {
-    with_context((), |c| c.polygon_offset(fx(factor), fx(units)))
+    with_context((), |c| c.polygon_offset(fx(factor), fx(units), 0.0))
+}
+
+/// `EXT_polygon_offset_clamp`: `glPolygonOffset` whose offset is bounded by `clamp`.
+#[no_mangle]
+pub extern "C" fn glPolygonOffsetClampEXT(factor: GLfloat, units: GLfloat, clamp: GLfloat) {
+    with_context((), |c| c.polygon_offset(factor, units, clamp))
 }

@@ -253,12 +253,14 @@ pub unsafe extern "C" fn glCompressedTexImage2D(
         // SAFETY: the application provides `image_size` bytes at a non-null `data`.
         let bytes =
             (!data.is_null()).then(|| unsafe { client_bytes(data as usize, image_size as usize) });
-        c.compressed_tex_image_2d(face, format, levels, width, height, bytes)
+        c.compressed_tex_image_2d(face, format, internalformat, levels, width, height, bytes)
     })
 }
 
+/// # Safety
+/// A non-null `data` must point to `image_size` readable bytes.
 #[no_mangle]
-pub extern "C" fn glCompressedTexSubImage2D(
+pub unsafe extern "C" fn glCompressedTexSubImage2D(
     target: GLenum,
     level: GLint,
     xoffset: GLint,
@@ -267,12 +269,19 @@ pub extern "C" fn glCompressedTexSubImage2D(
     height: GLsizei,
     format: GLenum,
     image_size: GLsizei,
-    _data: *const GLvoid,
+    data: *const GLvoid,
 ) {
     with_context((), |c| {
-        c.compressed_tex_sub_image_2d(
+        let update = match c.compressed_tex_sub_image_2d_check(
             target, level, xoffset, yoffset, width, height, format, image_size,
-        )
+        ) {
+            Ok(u) => u,
+            Err(e) => return c.set_error(e),
+        };
+        // SAFETY: the application provides `image_size` bytes at a non-null `data`.
+        let bytes =
+            (!data.is_null()).then(|| unsafe { client_bytes(data as usize, image_size as usize) });
+        c.compressed_tex_sub_image_2d(update, bytes)
     })
 }
 
