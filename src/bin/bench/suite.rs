@@ -27,11 +27,12 @@ use GLES_CM::gles::types::GLenum;
 
 /// The GL scenes, in table order: the main ones, the app-class ones (each at RGB565 with
 /// dithering, the default state, and at RGBA8888), then those only the scaling table uses.
-pub const NAMES: [&str; 29] = [
+pub const NAMES: [&str; 30] = [
     "clear-640",
     "flat-640",
     "smooth-640",
     "texture-640",
+    "texture-npot-640",
     "clear-1280",
     "flat-1280",
     "smooth-1280",
@@ -353,6 +354,7 @@ impl Scene {
             "flat-640" => fill(Fill::Flat, 640, 480, Class::Main),
             "smooth-640" => fill(Fill::Smooth, 640, 480, Class::Main),
             "texture-640" => fill(Fill::Textured, 640, 480, Class::Main),
+            "texture-npot-640" => fill(Fill::TexturedNpot, 640, 480, Class::Main),
             "clear-1280" => fill(Fill::Clear, 1280, 960, Class::Main),
             "flat-1280" => fill(Fill::Flat, 1280, 960, Class::Main),
             "smooth-1280" => fill(Fill::Smooth, 1280, 960, Class::Main),
@@ -752,6 +754,9 @@ enum Fill {
     Flat,
     Smooth,
     Textured,
+    /// As `Textured` with a 300 × 300 texture (`OES_texture_npot`): what sizes other than
+    /// powers of two cost.
+    TexturedNpot,
 }
 
 /// Full-screen quads, no depth test, each layer covering the previous one (clear: the
@@ -760,6 +765,8 @@ fn fill(kind: Fill, w: u32, h: u32, class: Class) -> Scene {
     const LAYERS: usize = 4;
     let mut rng = Lcg(640 + w as u64);
     let layers = if kind == Fill::Clear { 0 } else { LAYERS };
+    let textured = matches!(kind, Fill::Textured | Fill::TexturedNpot);
+    let side: u32 = if kind == Fill::TexturedNpot { 300 } else { 256 };
     let (fw, fh) = (w as f32, h as f32);
     let (mut pos, mut col, mut tc) = (Vec::new(), Vec::new(), Vec::new());
     for _ in 0..layers {
@@ -776,7 +783,7 @@ fn fill(kind: Fill, w: u32, h: u32, class: Class) -> Scene {
             pos.extend([x, y, 0.0]);
             col.extend(quad[[0, 1, 2, 0, 2, 3][k]]);
             // About one texel per pixel at 640 × 480.
-            tc.extend([x / 256.0, y / 256.0]);
+            tc.extend([x / side as f32, y / side as f32]);
         }
     }
     let mut setup = vec![
@@ -787,9 +794,9 @@ fn fill(kind: Fill, w: u32, h: u32, class: Class) -> Scene {
     let mut textures = Vec::new();
     match kind {
         Fill::Flat => setup.push(Op::Shade(ShadeModel::Flat)),
-        Fill::Textured => {
+        Fill::Textured | Fill::TexturedNpot => {
             textures.push(Tex::new(
-                256,
+                side,
                 MinFilter::Linear,
                 MagFilter::Linear,
                 |x, y| {
@@ -817,8 +824,8 @@ fn fill(kind: Fill, w: u32, h: u32, class: Class) -> Scene {
         Fill::Clear => "glClear of color and depth".to_owned(),
         Fill::Flat => format!("{LAYERS} full-screen flat-shaded quads"),
         Fill::Smooth => format!("{LAYERS} full-screen smooth-shaded quads"),
-        Fill::Textured => format!(
-            "{LAYERS} full-screen quads, 256x256 RGBA texture, LINEAR, MODULATE with smooth colors"
+        Fill::Textured | Fill::TexturedNpot => format!(
+            "{LAYERS} full-screen quads, {side}x{side} RGBA texture, LINEAR, REPEAT, MODULATE with smooth colors"
         ),
     };
     let pixels = (w * h) as f64 * layers.max(1) as f64;
@@ -837,7 +844,7 @@ fn fill(kind: Fill, w: u32, h: u32, class: Class) -> Scene {
         position: Attr::float(&pos, 3),
         color: Some(Attr::float(&col, 4)),
         normal: None,
-        texcoord: [(kind == Fill::Textured).then(|| Attr::float(&tc, 2)), None],
+        texcoord: [textured.then(|| Attr::float(&tc, 2)), None],
         indices: Vec::new(),
         buffers: false,
         textures,
