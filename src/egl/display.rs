@@ -16,6 +16,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 
 use crate::gles::current as gl_current;
 
+use super::capture;
 use super::config::{self, Config, Criteria, MAX_SWAP_INTERVAL, MIN_SWAP_INTERVAL};
 use super::context::{self, Context};
 use super::surface::{self, Kind, MemoryLayout, NativeMemory, Surface};
@@ -437,9 +438,13 @@ pub fn swap_buffers(dpy: usize, s: usize) -> EglResult<()> {
     if surf.kind == Kind::Window {
         cur.ctx.finish();
         surf.present();
+    } else if capture::enabled() {
+        // A capture reads the target: everything drawn so far must be in it.
+        cur.ctx.finish();
     } else {
         cur.ctx.flush();
     }
+    capture::after_swap(&surf);
     Ok(())
 }
 
