@@ -22,7 +22,7 @@
 //! `gl_proc_table.rs` / `egl_proc_table.rs` (a `proc_table![glA, glB, ...];` invocation
 //! naming every exported function, for `include!` where such a macro is in scope, e.g. to
 //! build eglGetProcAddress's table). The link options set the
-//! SONAME `libGLES_CM.so`.
+//! SONAME `libGLES_CM.so.1` (see `link_options`).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::env;
@@ -317,7 +317,7 @@ fn main() {
         println!("cargo:rerun-if-changed={dir}");
     }
 
-    link_options();
+    link_options(&out);
 
     let mut gen = Generator::default();
     let headers = gen.generate(&root);
@@ -373,14 +373,38 @@ fn main() {
     }
 }
 
-/// The SONAME of the shared library.
+/// The SONAME of the shared library: versioned, so that `ldconfig` manages the installed
+/// names and a future incompatible ABI can be `.so.2` beside it.
+const SONAME: &str = "libGLES_CM.so.1";
+
+/// The SONAME, and a `libGLES_CM.so.1 -> libGLES_CM.so` link where cargo puts the library.
+///
+/// A program linked with `-lGLES_CM` against the build directory asks the dynamic loader for
+/// the SONAME, so the build directories need that name too (cargo only writes
+/// `libGLES_CM.so`): `target/<profile>` and `target/<profile>/deps` (where tests find the
+/// library), three levels above `OUT_DIR`. The links may dangle until the library is linked.
 ///
 /// No version script of our own: rustc already links a cdylib with one that exports exactly
 /// the `#[no_mangle] pub extern` functions and makes everything else local, and a second
 /// script could not hide a symbol rustc lists. So a stray `#[no_mangle]` function is caught
 /// by `tests/symbols.rs`, not hidden here.
-fn link_options() {
-    println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libGLES_CM.so");
+fn link_options(out: &Path) {
+    println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,{SONAME}");
+    let Some(profile) = out.ancestors().nth(3) else {
+        return;
+    };
+    for dir in [profile.to_path_buf(), profile.join("deps")] {
+        let link = dir.join(SONAME);
+        if fs::read_link(&link).is_ok_and(|t| t == Path::new("libGLES_CM.so")) {
+            continue;
+        }
+        let _ = fs::create_dir_all(&dir);
+        let _ = fs::remove_file(&link);
+        #[cfg(unix)]
+        if let Err(e) = std::os::unix::fs::symlink("libGLES_CM.so", &link) {
+            println!("cargo:warning=cannot link {}: {e}", link.display());
+        }
+    }
 }
 
 /// Writes `text` to `path` unless it already holds exactly that. Returns whether the file

@@ -1,5 +1,5 @@
 //! The shared library as a binary: it exports only `gl*`/`egl*` symbols, exactly the
-//! functions the generated headers declare, carries the SONAME `libGLES_CM.so`, and
+//! functions the generated headers declare, carries the SONAME `libGLES_CM.so.1`, and
 //! `scripts/compat-names.sh` gives it the usual file names as symlinks to the one object.
 
 mod common;
@@ -85,14 +85,14 @@ fn exports_only_gl_and_egl_symbols() {
 }
 
 #[test]
-fn soname_is_libgles_cm() {
+fn soname_is_versioned_libgles_cm() {
     let out = run(Command::new("readelf").arg("-d").arg(library()));
     let soname = out.lines().find(|l| l.contains("(SONAME)"));
     assert!(
         soname
-            .map(|l| l.contains("[libGLES_CM.so]"))
+            .map(|l| l.contains("[libGLES_CM.so.1]"))
             .unwrap_or(false),
-        "SONAME is not libGLES_CM.so: {soname:?}"
+        "SONAME is not libGLES_CM.so.1: {soname:?}"
     );
 }
 
