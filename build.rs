@@ -17,12 +17,17 @@
 //! also copied to `include/`; `tests/headers.rs` fails while the two differ. A header change
 //! never fails the build.
 //!
+//! Extension blocks of `glext.h` and `eglext.h` follow the Khronos registry as recorded in
+//! `headers/glext.txt` and `headers/eglext.txt` (tokens, types, functions of every
+//! extension); a registry function the library does not export is declared there but is no
+//! entry point, and is listed in `$OUT_DIR/declared_only.txt`.
+//!
 //! Also written to `$OUT_DIR`: `entry_points.txt` (`header name` per line),
 //! `entry_points.inc` (an `EP(name)` X-macro list for `c_tests/entry_points.c`),
 //! `gl_proc_table.rs` / `egl_proc_table.rs` (a `proc_table![glA, glB, ...];` invocation
 //! naming every exported function, for `include!` where such a macro is in scope, e.g. to
 //! build eglGetProcAddress's table). The link options set the
-//! SONAME `libGLES_CM.so`.
+//! SONAME `libGLES_CM.so.1` (see `link_options`).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::env;
@@ -322,7 +327,7 @@ fn main() {
         println!("cargo:rerun-if-changed={dir}");
     }
 
-    link_options();
+    link_options(&out);
 
     let mut gen = Generator::default();
     let headers = gen.generate(&root);
@@ -363,6 +368,16 @@ fn main() {
         let _ = writeln!(table, "    {},", ep.name);
     }
     write_if_changed(&out.join("entry_points.txt"), &list);
+    let mut declared_only = gen.declared_only.clone();
+    declared_only.sort();
+    declared_only.dedup();
+    write_if_changed(
+        &out.join("declared_only.txt"),
+        &declared_only
+            .iter()
+            .map(|n| format!("{n}\n"))
+            .collect::<String>(),
+    );
     write_if_changed(&out.join("entry_points.inc"), &inc);
     write_if_changed(
         &out.join("gl_proc_table.rs"),
@@ -378,14 +393,38 @@ fn main() {
     }
 }
 
-/// The SONAME of the shared library.
+/// The SONAME of the shared library: versioned, so that `ldconfig` manages the installed
+/// names and a future incompatible ABI can be `.so.2` beside it.
+const SONAME: &str = "libGLES_CM.so.1";
+
+/// The SONAME, and a `libGLES_CM.so.1 -> libGLES_CM.so` link where cargo puts the library.
+///
+/// A program linked with `-lGLES_CM` against the build directory asks the dynamic loader for
+/// the SONAME, so the build directories need that name too (cargo only writes
+/// `libGLES_CM.so`): `target/<profile>` and `target/<profile>/deps` (where tests find the
+/// library), three levels above `OUT_DIR`. The links may dangle until the library is linked.
 ///
 /// No version script of our own: rustc already links a cdylib with one that exports exactly
 /// the `#[no_mangle] pub extern` functions and makes everything else local, and a second
 /// script could not hide a symbol rustc lists. So a stray `#[no_mangle]` function is caught
 /// by `tests/symbols.rs`, not hidden here.
-fn link_options() {
-    println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libGLES_CM.so");
+fn link_options(out: &Path) {
+    println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,{SONAME}");
+    let Some(profile) = out.ancestors().nth(3) else {
+        return;
+    };
+    for dir in [profile.to_path_buf(), profile.join("deps")] {
+        let link = dir.join(SONAME);
+        if fs::read_link(&link).is_ok_and(|t| t == Path::new("libGLES_CM.so")) {
+            continue;
+        }
+        let _ = fs::create_dir_all(&dir);
+        let _ = fs::remove_file(&link);
+        #[cfg(unix)]
+        if let Err(e) = std::os::unix::fs::symlink("libGLES_CM.so", &link) {
+            println!("cargo:warning=cannot link {}: {e}", link.display());
+        }
+    }
 }
 
 /// Writes `text` to `path` unless it already holds exactly that. Returns whether the file
@@ -455,6 +494,39 @@ struct Section {
     tokens: Vec<Token>,
 }
 
+/// One line of a `headers/*.txt` registry file.
+#[derive(Clone, Debug)]
+enum Item {
+    Tok(Token),
+    Type(String),
+    Fn(Function),
+    If(String),
+    Endif,
+}
+
+/// An extension block of a registry file.
+#[derive(Clone, Debug, Default)]
+struct RegistryExt {
+    name: String,
+    items: Vec<Item>,
+}
+
+/// A registry file: the header's own tokens, then the extensions in registry order.
+#[derive(Clone, Debug, Default)]
+struct Registry {
+    head: Vec<Token>,
+    exts: Vec<RegistryExt>,
+}
+
+/// The declarations of one `if` group of an extension block (the unconditional part first).
+#[derive(Default)]
+struct Group {
+    cond: Option<String>,
+    types: Vec<String>,
+    tokens: Vec<Token>,
+    funcs: Vec<Function>,
+}
+
 struct EntryPoint {
     header: &'static str,
     name: String,
@@ -466,6 +538,8 @@ struct EntryPoint {
 struct Generator {
     warnings: Vec<String>,
     entry_points: Vec<EntryPoint>,
+    /// Functions the headers declare (from the registry) that the library does not export.
+    declared_only: Vec<String>,
 }
 
 impl Generator {
@@ -538,10 +612,15 @@ impl Generator {
             Vec::new()
         };
 
+        let gl_registry = self.registry(&root.join("headers/glext.txt"));
+        let egl_registry = self.registry(&root.join("headers/eglext.txt"));
+        // Extensions of the core header (gl.h) keep their block there.
+        let in_gl_h: BTreeSet<String> = gl_tokens.iter().filter_map(|s| s.name.clone()).collect();
+
         let gl_h = self.gl_h(&gl_tokens, gl_core, &mut gl_ext);
-        let glext_h = self.glext_h(&gl_ext_tokens, gl_ext);
+        let glext_h = self.glext_h(&gl_ext_tokens, gl_ext, &gl_registry, &in_gl_h);
         let egl_h = self.egl_h(&egl_tokens, egl_core, &mut egl_ext);
-        let eglext_h = self.eglext_h(&egl_ext_tokens, egl_ext);
+        let eglext_h = self.eglext_h(&egl_ext_tokens, egl_ext, &egl_registry);
         let eglplatform_h = self.eglplatform_h(root);
 
         vec![
@@ -549,6 +628,7 @@ impl Generator {
             ("GLES/glplatform.h", GLPLATFORM_H.to_string()),
             ("GLES/gl.h", gl_h),
             ("GLES/glext.h", glext_h),
+            ("GLES/egl.h", LEGACY_EGL_H.to_string()),
             ("EGL/eglplatform.h", eglplatform_h),
             ("EGL/egl.h", egl_h),
             ("EGL/eglext.h", eglext_h),
@@ -616,6 +696,64 @@ impl Generator {
                 None
             }
         }
+    }
+
+    /// A `headers/*.txt` registry file (its format is described at its top).
+    fn registry(&mut self, path: &Path) -> Registry {
+        println!("cargo:rerun-if-changed={}", path.display());
+        let Ok(text) = fs::read_to_string(path) else {
+            self.warnings
+                .push(format!("cannot read {}", path.display()));
+            return Registry::default();
+        };
+        let mut r = Registry::default();
+        for (n, line) in text.lines().enumerate() {
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let (kind, rest) = line.split_once(' ').unwrap_or((line, ""));
+            let item = match kind {
+                "ext" => {
+                    r.exts.push(RegistryExt {
+                        name: rest.to_string(),
+                        items: Vec::new(),
+                    });
+                    continue;
+                }
+                "tok" => rest.split_once(' ').map(|(name, value)| {
+                    Item::Tok(Token {
+                        name: name.to_string(),
+                        ty: C_VALUE.to_string(),
+                        value: value.to_string(),
+                    })
+                }),
+                "type" => Some(Item::Type(rest.to_string())),
+                "fn" => {
+                    let parts: Vec<&str> = rest.split('|').collect();
+                    match parts.as_slice() {
+                        [ret, name, args] => Some(Item::Fn(Function {
+                            name: name.to_string(),
+                            ret: ret.to_string(),
+                            args: if args.is_empty() { "void" } else { args }.to_string(),
+                        })),
+                        _ => None,
+                    }
+                }
+                "if" => Some(Item::If(rest.to_string())),
+                "endif" => Some(Item::Endif),
+                _ => None,
+            };
+            match (item, r.exts.last_mut()) {
+                (Some(Item::Tok(t)), None) => r.head.push(t),
+                (Some(i), Some(e)) => e.items.push(i),
+                _ => self.warnings.push(format!(
+                    "{}:{}: cannot read `{line}`",
+                    path.display(),
+                    n + 1
+                )),
+            }
+        }
+        r
     }
 
     /// The sections of a token file.
@@ -726,7 +864,13 @@ impl Generator {
         h
     }
 
-    fn glext_h(&mut self, sections: &[Section], ext: BTreeMap<String, Function>) -> String {
+    fn glext_h(
+        &mut self,
+        sections: &[Section],
+        ext: BTreeMap<String, Function>,
+        registry: &Registry,
+        in_gl_h: &BTreeSet<String>,
+    ) -> String {
         let mut h = String::new();
         h += &preamble("GLES/glext.h", "OpenGL ES 1.x extensions");
         h += "#ifndef __gles1_glext_h_\n#define __gles1_glext_h_ 1\n\n";
@@ -738,6 +882,8 @@ impl Generator {
         h += &self.extension_blocks(
             "GLES/glext.h",
             sections,
+            registry,
+            in_gl_h,
             GL_EXTENSION_FUNCTIONS,
             ext,
             ("GL_API", "GL_APIENTRY", "GL_APIENTRYP"),
@@ -797,7 +943,12 @@ impl Generator {
         h
     }
 
-    fn eglext_h(&mut self, sections: &[Section], ext: BTreeMap<String, Function>) -> String {
+    fn eglext_h(
+        &mut self,
+        sections: &[Section],
+        ext: BTreeMap<String, Function>,
+        registry: &Registry,
+    ) -> String {
         let mut h = String::new();
         h += &preamble("EGL/eglext.h", "EGL extensions");
         h += "#ifndef __eglext_h_\n#define __eglext_h_ 1\n\n";
@@ -805,9 +956,13 @@ impl Generator {
         h += CPP_OPEN;
         h += "/* Extension prototypes are declared when EGL_EGLEXT_PROTOTYPES is defined;\n";
         h += " * the PFN...PROC pointer types always are. */\n\n";
+        h += &defines(&registry.head, "");
+        h += EGL_ATTRIB_TYPE;
         h += &self.extension_blocks(
             "EGL/eglext.h",
             sections,
+            registry,
+            &BTreeSet::new(),
             EGL_EXTENSION_FUNCTIONS,
             ext,
             ("EGLAPI", "EGLAPIENTRY", "EGLAPIENTRYP"),
@@ -822,11 +977,16 @@ impl Generator {
     /// One `#ifndef NAME` block per extension (its tokens, then its functions' pointer types
     /// and prototypes under `guard`), including extensions that have functions but no token
     /// section, then a block for the functions `table` lists under no extension.
+    ///
+    /// The registry's extensions come first, in its order, each with the tokens and exported
+    /// functions of ours that belong to it; then our extensions the registry does not have.
     #[allow(clippy::too_many_arguments)]
     fn extension_blocks(
         &mut self,
         header: &'static str,
         sections: &[Section],
+        registry: &Registry,
+        skip: &BTreeSet<String>,
         table: &[(&str, &[&str])],
         mut ext: BTreeMap<String, Function>,
         decor: (&str, &str, &str),
@@ -839,6 +999,100 @@ impl Generator {
             .filter(|s| s.name.is_some())
             .cloned()
             .collect();
+        for r in registry.exts.iter().filter(|r| !skip.contains(&r.name)) {
+            let ours = sections
+                .iter()
+                .position(|s| s.name.as_deref() == Some(&r.name))
+                .map(|i| sections.remove(i))
+                .unwrap_or_default();
+            let mut exported: BTreeMap<String, Function> =
+                take_listed(table, &r.name, &mut [&mut ext])
+                    .into_iter()
+                    .map(|f| (f.name.clone(), f))
+                    .collect();
+            // Exported functions the table does not assign: found by the registry's name.
+            for item in &r.items {
+                if let Item::Fn(f) = item {
+                    if let Some(mine) = ext.remove(&f.name) {
+                        exported.insert(f.name.clone(), mine);
+                    }
+                }
+            }
+            let mut groups = vec![Group::default()];
+            for item in &r.items {
+                match item {
+                    Item::If(m) => groups.push(Group {
+                        cond: Some(m.clone()),
+                        ..Default::default()
+                    }),
+                    Item::Endif => groups.push(Group::default()),
+                    Item::Tok(t) => groups.last_mut().unwrap().tokens.push(t.clone()),
+                    Item::Type(t) => groups.last_mut().unwrap().types.push(t.clone()),
+                    Item::Fn(f) => groups.last_mut().unwrap().funcs.push(f.clone()),
+                }
+            }
+            // Our tokens the registry does not list (aliases of ours), and exported functions
+            // it does not name, go with its unconditional part.
+            let named: BTreeSet<&str> = r
+                .items
+                .iter()
+                .filter_map(|i| match i {
+                    Item::Tok(t) => Some(t.name.as_str()),
+                    _ => None,
+                })
+                .collect();
+            let extra: Vec<Token> = ours
+                .tokens
+                .iter()
+                .filter(|t| !named.contains(t.name.as_str()))
+                .cloned()
+                .collect();
+            groups[0].tokens.extend(extra);
+            h += &block_open(&r.name, &ours.comment);
+            let registry_fns: BTreeSet<String> = groups
+                .iter()
+                .flat_map(|g| g.funcs.iter().map(|f| f.name.clone()))
+                .collect();
+            let unnamed: Vec<String> = exported
+                .keys()
+                .filter(|n| !registry_fns.contains(*n))
+                .cloned()
+                .collect();
+            for n in unnamed {
+                groups[0].funcs.push(exported[&n].clone());
+            }
+            for g in groups {
+                if g.types.is_empty() && g.tokens.is_empty() && g.funcs.is_empty() {
+                    if let Some(c) = &g.cond {
+                        // Kept, empty, as the registry has it.
+                        h += &format!("#ifdef {c}\n#endif /* {c} */\n");
+                    }
+                    continue;
+                }
+                if let Some(c) = &g.cond {
+                    h += &format!("#ifdef {c}\n");
+                }
+                for t in &g.types {
+                    h += t;
+                    h += "\n";
+                }
+                h += &defines(&g.tokens, &r.name);
+                // (function, exported by us): ours where we export it, else the registry's.
+                let funcs: Vec<(Function, bool)> = g
+                    .funcs
+                    .into_iter()
+                    .map(|f| match exported.remove(&f.name) {
+                        Some(mine) => (mine, true),
+                        None => (f, false),
+                    })
+                    .collect();
+                h += &self.mixed_prototypes(header, &funcs, decor, guard);
+                if let Some(c) = &g.cond {
+                    h += &format!("#endif /* {c} */\n");
+                }
+            }
+            h += &format!("#endif /* {} */\n\n", r.name);
+        }
         for (e, _) in table {
             if !sections.iter().any(|s| s.name.as_deref() == Some(e))
                 && ext.keys().any(|n| extension_of(table, n) == Some(e))
@@ -899,6 +1153,46 @@ impl Generator {
                 Some(guard)
             };
             self.entry(header, &f.name, g);
+        }
+        h += "#endif\n";
+        h
+    }
+
+    /// Pointer types and prototypes of a registry group: the ones the library exports are
+    /// entry points, the others are declared (and said to be missing) only.
+    fn mixed_prototypes(
+        &mut self,
+        header: &'static str,
+        funcs: &[(Function, bool)],
+        (api, entry, entryp): (&str, &str, &str),
+        guard: &'static str,
+    ) -> String {
+        if funcs.is_empty() {
+            return String::new();
+        }
+        let mut h = String::new();
+        let missing: Vec<&str> = funcs
+            .iter()
+            .filter(|(_, ours)| !ours)
+            .map(|(f, _)| f.name.as_str())
+            .collect();
+        if !missing.is_empty() {
+            h += &format!(
+                "/* Not provided by libGLES_CM: {}. */\n",
+                missing.join(", ")
+            );
+        }
+        for (f, _) in funcs {
+            h += &f.pfn(entryp);
+        }
+        h += &format!("#ifdef {guard}\n");
+        for (f, ours) in funcs {
+            h += &f.prototype(api, entry);
+            if *ours {
+                self.entry(header, &f.name, Some(guard));
+            } else {
+                self.declared_only.push(f.name.clone());
+            }
         }
         h += "#endif\n";
         h
@@ -1079,7 +1373,11 @@ fn defines(tokens: &[Token], block: &str) -> String {
         if t.name == block {
             continue;
         }
-        let value = c_value(t).unwrap_or_else(|| format!("({})", t.value));
+        let value = if t.ty == C_VALUE {
+            t.value.clone()
+        } else {
+            c_value(t).unwrap_or_else(|| format!("({})", t.value))
+        };
         let _ = writeln!(s, "#define {:<33} {}", t.name, value);
     }
     s
@@ -1102,6 +1400,39 @@ fn preamble(file: &str, what: &str) -> String {
          \x20* Token values are those of the Khronos API registry.\n */\n\n"
     )
 }
+
+/// The `ty` of a registry token: its value is written as C already.
+const C_VALUE: &str = "C";
+
+/// EGL 1.5's types, which EGL extensions (EGL_KHR_debug, EGL_EXT_device_query,
+/// EGL_NV_stream_consumer_eglimage, ...) use; `egl.h` declares them in its EGL 1.5 block once
+/// the library has EGL 1.5.
+const EGL_ATTRIB_TYPE: &str = "\
+#ifndef EGL_VERSION_1_5
+typedef void *EGLSync;
+typedef khronos_intptr_t EGLAttrib;
+typedef khronos_utime_nanoseconds_t EGLTime;
+typedef void *EGLImage;
+#endif
+
+";
+
+/// `GLES/egl.h`: early OpenGL ES 1.0 programs include only this header for both APIs.
+const LEGACY_EGL_H: &str = "\
+/*
+ * GLES/egl.h: for OpenGL ES 1.0 programs that include only this header, EGL and GL together.
+ *
+ * Generated by build.rs; do not edit.
+ */
+
+#ifndef __legacy_egl_h_
+#define __legacy_egl_h_
+
+#include <EGL/egl.h>
+#include <GLES/gl.h>
+
+#endif /* __legacy_egl_h_ */
+";
 
 const CPP_OPEN: &str = "#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n";
 const CPP_CLOSE: &str = "#ifdef __cplusplus\n}\n#endif\n\n";

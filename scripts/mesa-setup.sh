@@ -1,7 +1,9 @@
 #!/bin/sh
 # Installs what is missing of Mesa's GLES 1.1 + EGL (llvmpipe and softpipe) with its
 # development headers and a C compiler, on Debian: the optional oracle of the differential
-# C tests and the drop-in test. Idempotent; tests without Mesa say "skipped".
+# C tests and the drop-in test. libegl-dev and libgles-dev also bring the Khronos headers
+# (GLES/glext.h, EGL/eglext.h) that tests/headers.rs compares ours with. Idempotent; tests
+# without them say "skipped".
 set -eu
 pkgs="libegl1 libgles1 libegl-mesa0 libgl1-mesa-dri libegl-dev libgles-dev gcc libc6-dev"
 missing=""

@@ -34,6 +34,10 @@ const GENERATED: &[(&str, &str)] = &[
         include_str!(concat!(env!("OUT_DIR"), "/include/GLES/glext.h")),
     ),
     (
+        "GLES/egl.h",
+        include_str!(concat!(env!("OUT_DIR"), "/include/GLES/egl.h")),
+    ),
+    (
         "EGL/eglplatform.h",
         include_str!(concat!(env!("OUT_DIR"), "/include/EGL/eglplatform.h")),
     ),
@@ -334,4 +338,159 @@ fn core_headers_are_complete() {
         n.starts_with("EGL_") && n != "EGL_EGL_PROTOTYPES" && !ours_egl.contains_key(n)
     }));
     assert!(missing.is_empty(), "missing from our headers: {missing:?}");
+}
+
+/// The names a header declares: object-like macros, typedefs, functions and structs.
+#[derive(Default)]
+struct Declared {
+    typedefs: BTreeMap<String, String>,
+    functions: BTreeMap<String, String>,
+    structs: Vec<String>,
+}
+
+/// The name a one-line `typedef` declares: `(... *NAME)` for function pointer types, else
+/// the last identifier.
+fn typedef_name(line: &str) -> Option<String> {
+    let body = line.strip_prefix("typedef ")?.trim_end_matches(';');
+    let ident = |s: &str| {
+        s.trim_matches(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .rsplit(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .next()
+            .map(str::to_string)
+    };
+    match body.find('(') {
+        Some(open) => {
+            let close = open + body[open..].find(')')?;
+            ident(&body[open + 1..close])
+        }
+        None => ident(body),
+    }
+}
+
+fn declarations(text: &str) -> Declared {
+    let mut d = Declared::default();
+    for line in text.lines().map(str::trim) {
+        if line.starts_with("typedef ") && line.ends_with(';') {
+            if let Some(name) = typedef_name(line) {
+                d.typedefs.insert(name, line.to_string());
+            }
+        } else if let Some(decl) = line
+            .strip_prefix("GL_API ")
+            .or_else(|| line.strip_prefix("EGLAPI "))
+        {
+            if let Some(open) = decl.find(" (") {
+                let name = decl[..open].rsplit([' ', '*']).next().unwrap_or_default();
+                d.functions.insert(name.to_string(), line.to_string());
+            }
+        } else if let Some(rest) = line.strip_prefix("struct ") {
+            let name: String = rest
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            d.structs.push(name);
+        }
+    }
+    d
+}
+
+/// Issue 23: `GLES/glext.h`, `EGL/eglext.h` and `GLES/egl.h` declare every name the system's
+/// Khronos headers (Debian's libgles-dev / libegl-dev) do, with the same value, and every
+/// typedef and prototype of theirs compiles after ours (C11 accepts a repeated typedef or
+/// prototype only when the types are the same). Skipped without the system headers.
+#[test]
+fn extension_headers_declare_what_the_khronos_ones_do() {
+    let pairs = [
+        ("GLES/glext.h", "/usr/include/GLES/glext.h"),
+        ("EGL/eglext.h", "/usr/include/EGL/eglext.h"),
+        ("GLES/egl.h", "/usr/include/GLES/egl.h"),
+    ];
+    let mut missing = Vec::new();
+    let mut wrong = Vec::new();
+    let mut redeclared = String::new();
+    let mut counts = (0, 0, 0);
+    // A type may come from another of our headers (GLchar is in gl.h, theirs in glext.h).
+    let all_typedefs: Vec<String> = GENERATED
+        .iter()
+        .flat_map(|(_, text)| declarations(text).typedefs.into_keys())
+        .collect();
+    for (ours, sys) in pairs {
+        let Ok(theirs) = std::fs::read_to_string(sys) else {
+            println!(
+                "skipped: {sys} not installed (libgles-dev, libegl-dev; scripts/mesa-setup.sh)"
+            );
+            return;
+        };
+        let text = GENERATED.iter().find(|(r, _)| *r == ours).unwrap().1;
+        let (our_defs, their_defs) = (defines(text), defines(&theirs));
+        for (name, value) in &their_defs {
+            counts.0 += 1;
+            match our_defs.get(name) {
+                None => missing.push(format!("{ours}: #define {name}")),
+                Some(v) => {
+                    let same = match (parse_int(v), parse_int(value)) {
+                        (Some(a), Some(b)) => a == b,
+                        _ => v.split_whitespace().eq(value.split_whitespace()),
+                    };
+                    if !same {
+                        wrong.push(format!("{ours}: {name} is {v}, Khronos says {value}"));
+                    }
+                }
+            }
+        }
+        let (mine, khronos) = (declarations(text), declarations(&theirs));
+        for (name, line) in &khronos.typedefs {
+            counts.1 += 1;
+            if !mine.typedefs.contains_key(name) && !all_typedefs.contains(name) {
+                missing.push(format!("{ours}: typedef {name}"));
+            }
+            redeclared += line;
+            redeclared += "\n";
+        }
+        for (name, line) in &khronos.functions {
+            counts.2 += 1;
+            if !mine.functions.contains_key(name) {
+                missing.push(format!("{ours}: {name}"));
+            }
+            redeclared += line;
+            redeclared += "\n";
+        }
+        for name in &khronos.structs {
+            if !mine.structs.contains(name) {
+                missing.push(format!("{ours}: struct {name}"));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "missing: {missing:#?}");
+    assert!(wrong.is_empty(), "{wrong:#?}");
+    println!(
+        "{} macros, {} typedefs, {} functions compared",
+        counts.0, counts.1, counts.2
+    );
+    assert!(
+        counts.0 > 900 && counts.2 > 250,
+        "too few compared: {counts:?}"
+    );
+
+    let dir = scratch("khronos_signatures");
+    let source = dir.join("signatures.c");
+    std::fs::write(
+        &source,
+        format!(
+            "#define GL_GLEXT_PROTOTYPES 1\n#define EGL_EGLEXT_PROTOTYPES 1\n\
+             #include <GLES/egl.h>\n#include <GLES/glext.h>\n#include <EGL/eglext.h>\n\
+             /* The Khronos headers' declarations, repeated. */\n{redeclared}\
+             int main(void) {{ return 0; }}\n"
+        ),
+    )
+    .unwrap();
+    for (compiler, std) in [("cc", "-std=c11"), ("c++", "-std=c++11")] {
+        let mut cmd = Command::new(compiler);
+        if compiler == "c++" {
+            cmd.args(["-x", "c++"]);
+        }
+        run(cmd
+            .args([std, "-Wall", "-Werror", "-fsyntax-only", "-I"])
+            .arg(include_dir())
+            .arg(&source));
+    }
 }

@@ -1,49 +1,260 @@
-//! The install step as a user runs it: `scripts/install.sh PREFIX` puts the library, its
-//! compatibility names, the headers and pkg-config files under PREFIX; a C program built with
-//! `pkg-config --cflags --libs glesv1_cm egl` against that tree alone then runs, draws and
-//! reads back the right pixels. Skipped (with a message) where pkg-config is not installed.
+//! The install step as a packager runs it: `scripts/install.sh PREFIX` with `DESTDIR` stages a
+//! stripped library (debug info split into `.debug`), its versioned SONAME and compatibility
+//! names, private headers, pkg-config files with the API versions, and `m3g-render`. The
+//! README's example program, built with `pkg-config --cflags --libs glesv1_cm egl` against
+//! the staged tree alone, then runs and prints the right pixel; `--uninstall` removes every
+//! file again. Skipped (with a message) where pkg-config or binutils are not installed.
 
 mod common;
 use common::{lib_dir, run};
 
-use std::path::Path;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
+const MANIFEST_DIR: &str = env!("CARGO_MANIFEST_DIR");
+const PREFIX: &str = "/opt/gles-cm-install-test";
+
+fn tools_missing() -> Option<&'static str> {
+    ["pkg-config", "objcopy", "strip", "readelf"]
+        .into_iter()
+        .find(|t| Command::new(t).arg("--version").output().is_err())
+}
+
+/// The cargo target directory the tests run from (`m3g-render` is built there), so the
+/// script is exercised through `CARGO_TARGET_DIR` rather than its default.
+fn target_dir() -> PathBuf {
+    Path::new(env!("CARGO_BIN_EXE_m3g-render"))
+        .ancestors()
+        .nth(2)
+        .expect("target dir")
+        .to_path_buf()
+}
+
+fn install(destdir: &Path, extra_env: &[(&str, &str)], args: &[&str]) -> String {
+    let mut cmd = Command::new("sh");
+    cmd.arg(Path::new(MANIFEST_DIR).join("scripts/install.sh"))
+        .args(args)
+        .arg(PREFIX)
+        .env("DESTDIR", destdir)
+        .env("CARGO_TARGET_DIR", target_dir())
+        .env("GLES_CM_LIB", lib_dir().join("libGLES_CM.so"))
+        .env_remove("STRIP")
+        .env_remove("COMPAT");
+    for (k, v) in extra_env {
+        cmd.env(k, v);
+    }
+    run(&mut cmd)
+}
+
+/// Every file and link under `root`: relative path to size (files) or `-> target` (links).
+fn tree(root: &Path) -> BTreeMap<String, String> {
+    fn walk(root: &Path, dir: &Path, out: &mut BTreeMap<String, String>) {
+        for e in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+            let p = e.path();
+            let rel = p.strip_prefix(root).unwrap().to_string_lossy().into_owned();
+            let meta = std::fs::symlink_metadata(&p).unwrap();
+            if meta.file_type().is_symlink() {
+                let t = std::fs::read_link(&p).unwrap();
+                out.insert(rel, format!("-> {}", t.display()));
+            } else if meta.is_dir() {
+                walk(root, &p, out);
+            } else {
+                out.insert(rel, meta.len().to_string());
+            }
+        }
+    }
+    let mut out = BTreeMap::new();
+    walk(root, root, &mut out);
+    out
+}
+
+fn sections(file: &Path) -> String {
+    run(Command::new("readelf").arg("-S").arg("-W").arg(file))
+}
+
+/// The C program of the README's "Quick start for C".
+fn readme_program() -> String {
+    let readme = std::fs::read_to_string(Path::new(MANIFEST_DIR).join("README.md")).unwrap();
+    let after = readme
+        .split("A complete program")
+        .nth(1)
+        .expect("README has its complete program");
+    let start = after.find("```c\n").expect("a C block") + 5;
+    let len = after[start..].find("```").expect("block end");
+    after[start..start + len].to_string()
+}
+
+fn pkg_config(destdir: &Path, args: &[&str]) -> String {
+    let pc = destdir.join(&PREFIX[1..]).join("lib/pkgconfig");
+    run(Command::new("pkg-config")
+        .args(args)
+        .env("PKG_CONFIG_LIBDIR", &pc)
+        .env("PKG_CONFIG_PATH", &pc)
+        .env("PKG_CONFIG_SYSROOT_DIR", destdir))
+    .trim()
+    .to_string()
+}
+
 #[test]
-fn installed_tree_builds_and_runs_a_program_through_pkg_config() {
-    if Command::new("pkg-config")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
-        println!("skipped: pkg-config is not installed");
+fn staged_install_is_stripped_versioned_private_and_builds_the_readme_program() {
+    if let Some(t) = tools_missing() {
+        println!("skipped: {t} is not installed");
         return;
     }
-    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let prefix = lib_dir().join("install-test");
-    let _ = std::fs::remove_dir_all(&prefix);
-    run(Command::new("sh")
-        .arg(manifest.join("scripts/install.sh"))
-        .arg(&prefix)
-        .env("GLES_CM_LIB", lib_dir().join("libGLES_CM.so")));
-    for name in ["libGLES_CM.so", "libGLESv1_CM.so.1", "libEGL.so.1"] {
-        assert!(prefix.join("lib").join(name).exists(), "{name} installed");
-    }
-    assert!(prefix.join("include/GLES/gl.h").exists());
+    let destdir = lib_dir().join("install-test-destdir");
+    let _ = std::fs::remove_dir_all(&destdir);
+    install(&destdir, &[], &[]);
+    let root = destdir.join(&PREFIX[1..]);
 
-    let pc_path = prefix.join("lib/pkgconfig");
-    let flags = run(Command::new("pkg-config")
-        .args(["--cflags", "--libs", "glesv1_cm", "egl"])
-        .env("PKG_CONFIG_PATH", &pc_path)
-        .env("PKG_CONFIG_LIBDIR", &pc_path));
-    let exe = prefix.join("triangle");
-    // The drop-in program uses only the standard headers; here they come from the tree.
-    let mut cc = Command::new(std::env::var("CC").unwrap_or_else(|_| "cc".into()));
-    cc.arg(manifest.join("c_tests/dropin/triangle.c"))
-        .arg("-o")
-        .arg(&exe)
-        .args(flags.split_whitespace());
-    run(&mut cc);
-    let out = run(Command::new(&exe).env("LD_LIBRARY_PATH", prefix.join("lib")));
-    assert!(out.contains("gles-cm") && out.contains("ok"), "{out}");
+    let files = tree(&root);
+    println!("installed under DESTDIR{PREFIX}:");
+    for (k, v) in &files {
+        println!("  {k:44} {v}");
+    }
+    let names: Vec<&str> = files.keys().map(String::as_str).collect();
+    let mut expected = vec![
+        "bin/.debug/m3g-render.debug",
+        "bin/m3g-render",
+        "lib/.debug/libGLES_CM.so.1.debug",
+        "lib/libEGL.so",
+        "lib/libEGL.so.1",
+        "lib/libGLES_CM.so",
+        "lib/libGLES_CM.so.1",
+        "lib/libGLESv1_CM.so",
+        "lib/libGLESv1_CM.so.1",
+        "lib/pkgconfig/egl.pc",
+        "lib/pkgconfig/glesv1_cm.pc",
+    ];
+    let headers: Vec<String> = ["GLES", "EGL", "KHR"]
+        .iter()
+        .flat_map(|d| std::fs::read_dir(Path::new(MANIFEST_DIR).join("include").join(d)))
+        .flatten()
+        .flatten()
+        .map(|e| {
+            let p = e.path();
+            let dir = p.parent().unwrap().file_name().unwrap().to_string_lossy();
+            format!(
+                "include/gles-cm/{dir}/{}",
+                p.file_name().unwrap().to_string_lossy()
+            )
+        })
+        .collect();
+    assert!(headers.len() >= 7, "{headers:?}");
+    expected.extend(headers.iter().map(String::as_str));
+    expected.sort();
+    assert_eq!(names, expected);
+
+    for link in [
+        "libGLES_CM.so",
+        "libGLESv1_CM.so.1",
+        "libGLESv1_CM.so",
+        "libEGL.so.1",
+        "libEGL.so",
+    ] {
+        assert_eq!(
+            files[&format!("lib/{link}")],
+            "-> libGLES_CM.so.1",
+            "{link}"
+        );
+    }
+
+    // Stripped, with the debug info beside it and linked.
+    let lib = root.join("lib/libGLES_CM.so.1");
+    let lib_sections = sections(&lib);
+    assert!(
+        !lib_sections.contains(".debug_info"),
+        "library not stripped"
+    );
+    assert!(!lib_sections.contains(".symtab"), "library keeps .symtab");
+    assert!(lib_sections.contains(".gnu_debuglink"), "no debug link");
+    let debug = root.join("lib/.debug/libGLES_CM.so.1.debug");
+    assert!(
+        sections(&debug).contains(".debug_info"),
+        "debug file holds no debug info"
+    );
+    let link = run(Command::new("readelf")
+        .args(["--string-dump=.gnu_debuglink"])
+        .arg(&lib));
+    assert!(link.contains("libGLES_CM.so.1.debug"), "{link}");
+    let source_len = std::fs::metadata(lib_dir().join("libGLES_CM.so"))
+        .unwrap()
+        .len();
+    assert!(
+        std::fs::metadata(&lib).unwrap().len() < source_len / 2,
+        "the stripped library is not much smaller than the build's {source_len} bytes"
+    );
+    let dynamic = run(Command::new("readelf").arg("-d").arg(&lib));
+    assert!(dynamic.contains("[libGLES_CM.so.1]"), "{dynamic}");
+    assert!(!sections(&root.join("bin/m3g-render")).contains(".debug_info"));
+
+    // pkg-config: API versions, the package version apart, the private include directory.
+    assert_eq!(pkg_config(&destdir, &["--modversion", "glesv1_cm"]), "1.1");
+    assert_eq!(pkg_config(&destdir, &["--modversion", "egl"]), "1.4");
+    pkg_config(&destdir, &["--atleast-version=1.4", "egl"]);
+    pkg_config(&destdir, &["--atleast-version=1.1", "glesv1_cm"]);
+    assert_eq!(
+        pkg_config(&destdir, &["--variable=gles_cm_version", "egl"]),
+        env!("CARGO_PKG_VERSION")
+    );
+    let flags = pkg_config(&destdir, &["--cflags", "--libs", "glesv1_cm", "egl"]);
+    assert!(
+        flags.contains(&format!("{}/include/gles-cm", root.display())),
+        "{flags}"
+    );
+
+    // The README's program, from the staged tree alone.
+    let work = destdir.join("work");
+    std::fs::create_dir_all(&work).unwrap();
+    let src = work.join("app.c");
+    std::fs::write(&src, readme_program()).unwrap();
+    let exe = work.join("app");
+    run(
+        Command::new(std::env::var("CC").unwrap_or_else(|_| "cc".into()))
+            .args(["-std=c99", "-Wall", "-Werror"])
+            .arg(&src)
+            .arg("-o")
+            .arg(&exe)
+            .args(flags.split_whitespace()),
+    );
+    let needed = run(Command::new("readelf").arg("-d").arg(&exe));
+    assert!(
+        needed.contains("Shared library: [libGLES_CM.so.1]"),
+        "the program does not ask for the versioned name:\n{needed}"
+    );
+    let out = run(Command::new(&exe).env("LD_LIBRARY_PATH", root.join("lib")));
+    println!("README program: {out}");
+    assert!(out.contains("pixel (32, 16) = 255 128 0 255"), "{out}");
+
+    // The installed m3g-render runs (no arguments: usage, exit status 2).
+    let m3g = Command::new(root.join("bin/m3g-render")).output().unwrap();
+    assert_eq!(m3g.status.code(), Some(2), "{m3g:?}");
+
+    std::fs::remove_dir_all(&work).unwrap();
+    install(&destdir, &[], &["--uninstall"]);
+    let left = tree(&destdir);
+    assert!(left.is_empty(), "left after uninstall: {left:?}");
+}
+
+#[test]
+fn strip_0_and_compat_0_keep_the_debug_info_and_leave_out_the_compatibility_names() {
+    if let Some(t) = tools_missing() {
+        println!("skipped: {t} is not installed");
+        return;
+    }
+    let destdir = lib_dir().join("install-test-nostrip");
+    let _ = std::fs::remove_dir_all(&destdir);
+    install(&destdir, &[("STRIP", "0"), ("COMPAT", "0")], &[]);
+    let root = destdir.join(&PREFIX[1..]);
+    let files = tree(&root);
+    assert!(!files.keys().any(|k| k.contains(".debug")), "{files:?}");
+    assert!(!files.keys().any(|k| k.contains("libEGL")), "{files:?}");
+    assert!(sections(&root.join("lib/libGLES_CM.so.1")).contains(".debug_info"));
+    // Another implementation's libEGL.so.1 in the way is not ours to uninstall.
+    std::fs::write(root.join("lib/libEGL.so.1"), b"someone else's").unwrap();
+    install(&destdir, &[], &["--uninstall"]);
+    assert_eq!(
+        tree(&destdir).into_keys().collect::<Vec<_>>(),
+        [format!("{}/lib/libEGL.so.1", &PREFIX[1..])]
+    );
 }

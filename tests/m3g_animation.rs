@@ -1238,13 +1238,14 @@ fn duplicate_copies_the_skeleton_and_remaps_bones() {
 // tests/data/m3g/reference/MANIFEST.md (a pixel fails when some channel is off by more
 // than 8; at most 1 % of pixels may fail, and the mean channel difference is at most 1).
 
+#[path = "common/corpus.rs"]
+mod corpus;
+
 #[test]
 fn corpus_animated_files_match_the_reference_at_three_times() {
-    let dir = std::path::Path::new("tests/data/m3g");
-    if !dir.exists() {
-        eprintln!("corpus not found; skipped");
+    let Some(dir) = corpus::m3g_corpus() else {
         return;
-    }
+    };
     for file in ["desktop-m3g-skinned", "robot"] {
         let roots = match loader::Loader::load_path(dir.join(format!("{file}.m3g"))) {
             Ok(r) => r,

@@ -147,6 +147,8 @@ fn m3g_render_renders_a_group_chain_100000_deep() {
 // ---------------------------------------------------------------------------------------
 // Hand-made files.
 
+#[path = "common/corpus.rs"]
+mod corpus;
 #[path = "common/m3g_file.rs"]
 mod m3g_file;
 use m3g_file::{file, object};
@@ -455,18 +457,16 @@ fn a_referenced_file_is_read_within_the_budget() {
 /// nodes through `render_node`) and over the 100 000-deep chain: no panic.
 #[test]
 fn the_fuzz_renderer_runs_over_the_corpus_and_a_deep_chain() {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/m3g");
+    let dir = corpus::m3g_corpus();
     let mut files = 0;
-    for e in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
+    for e in dir.iter().flat_map(std::fs::read_dir).flatten().flatten() {
         if e.path().extension().is_some_and(|x| x == "m3g") {
             let roots = Loader::load_path(e.path()).unwrap();
             fuzz_render::render_loaded(&roots);
             files += 1;
         }
     }
-    if files == 0 {
-        eprintln!("corpus part skipped: no corpus at {}", dir.display());
-    }
+    assert!(dir.is_none() || files > 0, "the corpus has no .m3g file");
     on_small_stack(|| {
         let bytes = writer::save(&[deep_world().as_object3d()], false).unwrap();
         let roots = Loader::load(&bytes).unwrap();

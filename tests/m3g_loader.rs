@@ -10,8 +10,12 @@ use GLES_CM::m3g::loader::{
 use GLES_CM::m3g::writer::save;
 use GLES_CM::m3g::*;
 
+#[path = "common/corpus.rs"]
+mod corpus;
+
+/// The corpus is required here: these tests fail, never skip, without it.
 fn corpus_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/m3g")
+    corpus::corpus_path()
 }
 
 fn corpus() -> Vec<PathBuf> {

@@ -9,14 +9,11 @@ use image::AnimationDecoder;
 
 const EXE: &str = env!("CARGO_BIN_EXE_m3g-render");
 
+#[path = "common/corpus.rs"]
+mod corpus;
+
 fn corpus_dir() -> Option<PathBuf> {
-    let d = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/m3g");
-    if d.is_dir() {
-        Some(d)
-    } else {
-        eprintln!("skipped: no corpus at {}", d.display());
-        None
-    }
+    corpus::m3g_corpus()
 }
 
 /// A fresh temporary folder for one test.

@@ -16,6 +16,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 
 use crate::gles::current as gl_current;
 
+use super::capture;
 use super::config::{self, Config, Criteria, MAX_SWAP_INTERVAL, MIN_SWAP_INTERVAL};
 use super::context::{self, Context};
 use super::surface::{self, Kind, MemoryLayout, NativeMemory, Surface};
@@ -31,6 +32,14 @@ pub const VERSION: &CStr = c"1.4 gles-cm 0.1.0";
 pub const CLIENT_APIS: &CStr = c"OpenGL_ES";
 /// Only what is implemented: eglGetProcAddress answers for every function.
 pub const EXTENSIONS: &CStr = c"EGL_KHR_get_all_proc_addresses";
+
+/// The client extensions (EGL_EXT_client_extensions): what eglQueryString answers for
+/// EGL_NO_DISPLAY, before any display exists.
+pub const CLIENT_EXTENSIONS: &CStr =
+    c"EGL_EXT_client_extensions EGL_EXT_platform_base EGL_MESA_platform_surfaceless";
+
+/// EGL_MESA_platform_surfaceless's platform (`EGL_PLATFORM_SURFACELESS_MESA`).
+pub const PLATFORM_SURFACELESS_MESA: EGLenum = 0x31DD;
 
 /// Result of an EGL operation: the error code on failure.
 pub type EglResult<T> = Result<T, EGLint>;
@@ -112,6 +121,27 @@ pub fn get_display(_native: usize) -> usize {
     DISPLAY_HANDLE
 }
 
+/// eglGetPlatformDisplayEXT. The surfaceless platform's display is the one display: it has
+/// no window system, and memory windows and pixmaps are client memory, so they stay usable.
+pub fn get_platform_display(
+    platform: EGLenum,
+    native: usize,
+    attribs: &[(EGLint, EGLint)],
+) -> EglResult<usize> {
+    if platform != PLATFORM_SURFACELESS_MESA {
+        return Err(EGL_BAD_PARAMETER);
+    }
+    // EGL_MESA_platform_surfaceless: the native display must be EGL_DEFAULT_DISPLAY.
+    if native != 0 {
+        return Err(EGL_BAD_PARAMETER);
+    }
+    // The platform defines no display attributes.
+    if !attribs.is_empty() {
+        return Err(EGL_BAD_ATTRIBUTE);
+    }
+    Ok(DISPLAY_HANDLE)
+}
+
 /// eglInitialize: (major, minor).
 pub fn initialize(dpy: usize) -> EglResult<(EGLint, EGLint)> {
     let mut g = egl();
@@ -143,6 +173,9 @@ pub fn terminate(dpy: usize) -> EglResult<()> {
 }
 
 pub fn query_string(dpy: usize, name: EGLint) -> EglResult<&'static CStr> {
+    if dpy == 0 && name == EGL_EXTENSIONS {
+        return Ok(CLIENT_EXTENSIONS);
+    }
     egl().check(dpy)?;
     match name {
         EGL_VENDOR => Ok(VENDOR),
@@ -437,9 +470,13 @@ pub fn swap_buffers(dpy: usize, s: usize) -> EglResult<()> {
     if surf.kind == Kind::Window {
         cur.ctx.finish();
         surf.present();
+    } else if capture::enabled() {
+        // A capture reads the target: everything drawn so far must be in it.
+        cur.ctx.finish();
     } else {
         cur.ctx.flush();
     }
+    capture::after_swap(&surf);
     Ok(())
 }
 

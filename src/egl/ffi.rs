@@ -158,6 +158,55 @@ pub extern "C" fn eglGetDisplay(display_id: EGLNativeDisplayType) -> EGLDisplay 
     })
 }
 
+/// EGL_EXT_platform_base, for EGL_MESA_platform_surfaceless only.
+///
+/// # Safety
+/// `attrib_list` is null or EGL_NONE-terminated.
+#[no_mangle]
+pub unsafe extern "C" fn eglGetPlatformDisplayEXT(
+    platform: EGLenum,
+    native_display: *mut c_void,
+    attrib_list: *const EGLint,
+) -> EGLDisplay {
+    call(EGL_NO_DISPLAY, || {
+        // SAFETY: forwarded to the caller's contract.
+        let pairs = unsafe { attrib_pairs(attrib_list) };
+        d::get_platform_display(platform, native_display as usize, &pairs).map(handle)
+    })
+}
+
+/// EGL_EXT_platform_base: the native window is a `struct EGLMemoryWindow`, as for
+/// eglCreateWindowSurface.
+///
+/// # Safety
+/// As eglCreateWindowSurface's, with `native_window` for `win`.
+#[no_mangle]
+pub unsafe extern "C" fn eglCreatePlatformWindowSurfaceEXT(
+    dpy: EGLDisplay,
+    config: EGLConfig,
+    native_window: *mut c_void,
+    attrib_list: *const EGLint,
+) -> EGLSurface {
+    // SAFETY: forwarded to the caller's contract.
+    unsafe { eglCreateWindowSurface(dpy, config, native_window.cast(), attrib_list) }
+}
+
+/// EGL_EXT_platform_base: the native pixmap is a `struct EGLMemoryPixmap`, as for
+/// eglCreatePixmapSurface.
+///
+/// # Safety
+/// As eglCreatePixmapSurface's, with `native_pixmap` for `pixmap`.
+#[no_mangle]
+pub unsafe extern "C" fn eglCreatePlatformPixmapSurfaceEXT(
+    dpy: EGLDisplay,
+    config: EGLConfig,
+    native_pixmap: *mut c_void,
+    attrib_list: *const EGLint,
+) -> EGLSurface {
+    // SAFETY: forwarded to the caller's contract.
+    unsafe { eglCreatePixmapSurface(dpy, config, native_pixmap.cast(), attrib_list) }
+}
+
 /// # Safety
 /// `major` and `minor` are null or writable.
 #[no_mangle]

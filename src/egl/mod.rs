@@ -3,6 +3,7 @@
 //!
 //! Core logic lives in safe modules; `ffi` is the only place with `unsafe` code.
 
+pub mod capture;
 pub mod config;
 pub mod context;
 pub mod display;

@@ -85,5 +85,6 @@ pub extern "C" fn glFlush() {
 
 #[no_mangle]
 pub extern "C" fn glFinish() {
-    with_context((), |c| c.finish())
+    with_context((), |c| c.finish());
+    crate::egl::capture::after_finish();
 }
