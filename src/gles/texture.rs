@@ -43,8 +43,8 @@ pub struct TextureUnits {
     pub texgen_mode: [GLenum; MAX_TEXTURE_UNITS],
     /// Each unit's last snapshot, reused by the next draw while the texture and the bias
     /// are unchanged (rebuilding it, with the completeness check and two allocations, was
-    /// a large part of a state change's cost). It holds the snapshot's images alive until
-    /// the unit's next draw, as a pending draw does.
+    /// a large part of a state change's cost). Dropped before any texture changes (see
+    /// `forget_snapshots`).
     snapshots: std::cell::RefCell<[Option<Snapshot>; MAX_TEXTURE_UNITS]>,
 }
 
@@ -279,7 +279,16 @@ impl Context {
     /// With a framebuffer object bound, its pending rendering lands in its attachments first
     /// (they may be this texture).
     fn texture_changing(&mut self) {
+        self.forget_snapshots();
         self.fbo_texture_changing();
+    }
+
+    /// Drops the units' kept snapshots. A kept snapshot shares the texture's images, so a
+    /// change would copy a level rather than write it in place (every `glTexSubImage2D` of
+    /// a bound texture, say), and a deleted texture's images would live on until the
+    /// unit's next draw.
+    pub(super) fn forget_snapshots(&self) {
+        *self.textures.snapshots.borrow_mut() = Default::default();
     }
 
     /// The snapshot of the 2D texture or (`cube`) the cube map bound to `unit`, with the
