@@ -37,7 +37,7 @@ use GLES_CM::core::reference::{compare, ErrorStats};
 use GLES_CM::core::Target;
 
 use report::Table;
-use suite::{Class, Mode, Scene, M3G, NAMES};
+use suite::{is_m3g, Class, Mode, Scene, M3G, M3G_CORPUS, NAMES};
 
 /// Timed frames per renderer by default, after one warm-up frame; the median is reported.
 const FRAMES: usize = 9;
@@ -309,6 +309,10 @@ fn command(ctx: &Ctx, scene: &str, r: &Renderer) -> Command {
         .args(["--scene", scene]);
     let mode = r.mode.unwrap_or(Mode::DontCare);
     match r.kind {
+        Kind::Ours if scene == M3G_CORPUS => {
+            cmd.args(["--child", "m3g-corpus", "--m3g-dir"])
+                .arg(&ctx.corpus);
+        }
         Kind::Ours if scene == M3G => {
             cmd.args(["--child", "m3g", "--m3g-file"])
                 .arg(ctx.corpus.join(format!("{M3G_FILE}.m3g")))
@@ -353,7 +357,7 @@ fn median(v: &[f64]) -> Option<f64> {
 /// Measures every renderer of one scene, interleaved, and compares each image with
 /// `reference`.
 fn run_scene(ctx: &Ctx, name: &str, class: Class, memset: bool, reference: &Target) -> Vec<Row> {
-    let list = renderers(class, name == M3G, ctx.all);
+    let list = renderers(class, is_m3g(name), ctx.all);
     let mut children: Vec<Option<Child>> = Vec::new();
     let mut failures: Vec<Option<Outcome>> = Vec::new();
     for r in &list {
@@ -414,7 +418,7 @@ fn run_scene(ctx: &Ctx, name: &str, class: Class, memset: bool, reference: &Targ
                     (None, Some(_)) => {
                         let error = std::fs::read(&file).ok().and_then(|px| {
                             let _ = std::fs::remove_file(&file);
-                            let img = to_target(reference, &px, name == M3G)?;
+                            let img = to_target(reference, &px, is_m3g(name))?;
                             save_png(&img, &ctx.out_dir.join(format!("{name}-{}.png", r.slug())));
                             if ctx.diff {
                                 save_png(
@@ -526,7 +530,10 @@ fn child_main(args: &[String]) -> ExitCode {
         eprintln!("usage: bench --child ours|mesa|m3g --scene NAME [--mode MODE] [--lib PATH]");
         return ExitCode::from(2);
     };
-    let result = if which == "m3g" {
+    let result = if which == "m3g-corpus" {
+        let dir = get("--m3g-dir").map(PathBuf::from).unwrap_or_default();
+        worker::run_m3g_corpus(&dir)
+    } else if which == "m3g" {
         let file = get("--m3g-file").map(PathBuf::from).unwrap_or_default();
         let time = get("--m3g-time")
             .and_then(|t| t.parse().ok())
@@ -625,7 +632,7 @@ fn main() -> ExitCode {
             "--help" | "-h" => {
                 println!(
                     "usage: bench [--scene NAME[,NAME…]]… [--frames N] [--diff] [--markdown FILE]\n\
-                     scenes: {} {M3G}",
+                     scenes: {} {M3G} {M3G_CORPUS}",
                     NAMES.join(" ")
                 );
                 return ExitCode::SUCCESS;
@@ -702,9 +709,45 @@ fn main() -> ExitCode {
             .unwrap_or(NAMES.len()),
         M3G.to_owned(),
     );
+    scenes.insert(
+        NAMES
+            .iter()
+            .position(|n| *n == "smooth-320")
+            .map_or(scenes.len(), |i| i + 1),
+        M3G_CORPUS.to_owned(),
+    );
     for name in scenes.iter().filter(|n| wanted(n)) {
         let t0 = Instant::now();
-        let (reference, class, memset, summary) = if name == M3G {
+        let (reference, class, memset, summary) = if name == M3G_CORPUS {
+            match worker::corpus_files(&ctx.corpus).and_then(|files| {
+                let refs = files
+                    .iter()
+                    .map(|f| {
+                        let stem = f.file_stem().and_then(|s| s.to_str()).unwrap_or("");
+                        load_m3g_reference(&ctx.corpus.join(format!("reference/{stem}_t0.png")))
+                    })
+                    .collect::<Result<Vec<_>, _>>()?;
+                Ok((files.len(), worker::mosaic(&refs)))
+            }) {
+                Ok((n, r)) => (
+                    r,
+                    Class::Main,
+                    false,
+                    format!(
+                        "every file of the M3G corpus ({n}), each loaded once with m3g::loader \
+                         and, every frame, animated to t = 0 and rendered with Graphics3D at \
+                         240x320 (RGBA8888, depth 16), side by side in a {}-wide mosaic; error \
+                         against the mosaic of the corpus references reference/*_t0.png; \
+                         throughput column: frames per second",
+                        worker::MOSAIC_COLUMNS
+                    ),
+                ),
+                Err(e) => {
+                    eprintln!("{name}: skipped ({e})");
+                    continue;
+                }
+            }
+        } else if name == M3G {
             let path = ctx
                 .corpus
                 .join(format!("reference/{M3G_FILE}_t{M3G_TIME}.png"));
@@ -852,13 +895,13 @@ impl Report<'_> {
                         median_ms, error, ..
                     } => {
                         cells.push(format!("{median_ms:.2}"));
-                        cells.push(
-                            scene
-                                .as_ref()
-                                .map_or("-".into(), |s| s.throughput(median_ms / 1e3)),
-                        );
+                        cells.push(match &scene {
+                            Some(s) => s.throughput(median_ms / 1e3),
+                            None if is_m3g(name) => format!("{:.1} fps", 1e3 / median_ms),
+                            None => "-".into(),
+                        });
                         let peer = |k: Kind, t: usize| find(self.rows, name, k, t, None)?.ms();
-                        let (vs_lp, vs_sp) = if name == M3G {
+                        let (vs_lp, vs_sp) = if is_m3g(name) {
                             ("n/a".into(), "n/a".into())
                         } else {
                             (
@@ -1070,7 +1113,7 @@ impl Report<'_> {
             if class != Class::Main {
                 continue;
             }
-            let mode = (name != M3G).then_some(Mode::DontCare);
+            let mode = (!is_m3g(name)).then_some(Mode::DontCare);
             let speed = |th: usize| {
                 let ours = find(self.rows, name, Kind::Ours, th, mode).and_then(Row::ms);
                 let lp = find(self.rows, name, Kind::Llvmpipe, th, None).and_then(Row::ms);
@@ -1079,7 +1122,7 @@ impl Report<'_> {
                         let r = l / o;
                         verdict(Some(r >= 2.0), format!("{r:.2}x"))
                     }
-                    (Some(_), None) if name == M3G => "n/a (no peer)".into(),
+                    (Some(_), None) if is_m3g(name) => "n/a (no peer)".into(),
                     (Some(_), None) => "n/a (llvmpipe not measured)".into(),
                     _ => "n/a (ours not measured)".into(),
                 }
@@ -1121,9 +1164,10 @@ impl Report<'_> {
             })
             .collect();
         t.notes.push(format!(
-            "{M3G}: no peer runs the M3G layer; its error is against the corpus image, which \
-             Mesa rendered, so it measures agreement with Mesa (the corpus tolerance is at most \
-             1 % of pixels off by more than 8 steps)."
+            "{M3G}, {M3G_CORPUS}: no peer runs the M3G layer (a GL transcription of the corpus \
+             scenes is not built), so there is no speed ratio; their error is against the corpus \
+             images, which Mesa rendered, so it measures agreement with Mesa (the corpus \
+             tolerance is at most 1 % of pixels off by more than 8 steps)."
         ));
         if !clears.is_empty() {
             t.notes.push(format!(
@@ -1145,7 +1189,7 @@ impl Report<'_> {
                 let family = r.renderer.label(self.all);
                 let family = family.split(' ').next().unwrap_or("");
                 let line = format!("- GL_RENDERER | GL_VERSION of {family}: {renderer}");
-                if !seen.contains(&line) && r.scene != M3G {
+                if !seen.contains(&line) && !is_m3g(&r.scene) {
                     seen.push(line);
                 }
             }

@@ -517,6 +517,8 @@ impl Context {
         let Some((surface, key)) = self.fbo.surface.clone() else {
             return;
         };
+        // The write-back may go to a texture this context samples: written in place then.
+        self.forget_snapshots();
         let shared = self.shared.clone();
         let mut o = lock_objects(&shared);
         store(&mut o, &super::context::lock_target(surface.as_ref()), &key);

@@ -311,10 +311,11 @@ impl Context {
     pub(super) fn texture_render_state(&self, rs: &mut RenderState) {
         for u in 0..MAX_TEXTURE_UNITS {
             // A cube map enabled on a unit takes precedence over its 2D texture.
+            let bias = self.texenv.units[u].lod_bias;
             let sampler = if self.enables.texture_cube_map[u] {
-                Some(self.unit_cube_sampler(u))
+                Some(self.unit_snapshot(u, true, bias))
             } else if self.enables.texture_2d[u] {
-                Some(self.unit_sampler(u))
+                Some(self.unit_snapshot(u, false, bias))
             } else {
                 None
             };
@@ -327,7 +328,7 @@ impl Context {
             });
             rs.textures[u] = if let Some(sampler) = sampler {
                 sampler.map(|sampler| core_env::TextureUnit {
-                    sampler: sampler.with_lod_bias(self.texenv.units[u].lod_bias),
+                    sampler,
                     env: self.texenv.units[u].to_core(),
                     coord_replace: self.texenv.units[u].coord_replace,
                 })

@@ -43,6 +43,20 @@ pub struct TextureUnits {
     /// `GL_TEXTURE_GEN_MODE_OES` of each unit: `GL_NORMAL_MAP_OES` or
     /// `GL_REFLECTION_MAP_OES` (the initial value).
     pub texgen_mode: [GLenum; MAX_TEXTURE_UNITS],
+    /// Each unit's last snapshot, reused by the next draw while the texture and the bias
+    /// are unchanged (rebuilding it, with the completeness check and two allocations, was
+    /// a large part of a state change's cost). Dropped before any texture changes (see
+    /// `forget_snapshots`).
+    snapshots: std::cell::RefCell<[Option<Snapshot>; MAX_TEXTURE_UNITS]>,
+}
+
+/// A texture snapshot with what it was made from: the texture's version (which no other
+/// texture or later state of this one has), whether the cube map was sampled, and the
+/// level-of-detail bias's bits.
+#[derive(Debug)]
+struct Snapshot {
+    key: (u64, bool, u32),
+    sampler: Option<std::sync::Arc<crate::core::texture::Sampler>>,
 }
 
 /// How many values `glTexGen*vOES` reads for `coord` and `pname` (`None`: invalid names).
@@ -86,6 +100,7 @@ impl Default for TextureUnits {
             bound_cube: [const { Binding::NONE }; MAX_TEXTURE_UNITS],
             default_cube: Texture::new_cube_map(),
             texgen_mode: [GL_REFLECTION_MAP_OES; MAX_TEXTURE_UNITS],
+            snapshots: Default::default(),
         }
     }
 }
@@ -370,36 +385,50 @@ impl Context {
     /// With a framebuffer object bound, its pending rendering lands in its attachments first
     /// (they may be this texture).
     fn texture_changing(&mut self) {
+        self.forget_snapshots();
         self.fbo_texture_changing();
     }
 
-    /// A snapshot of the texture bound to `unit` for sampling, `None` when it is incomplete.
-    pub(super) fn unit_sampler(
-        &self,
-        unit: usize,
-    ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
-        self.bound_sampler(&self.textures.bound[unit], &self.textures.default)
+    /// Drops the units' kept snapshots. A kept snapshot shares the texture's images, so a
+    /// change would copy a level rather than write it in place (every `glTexSubImage2D` of
+    /// a bound texture, say), and a deleted texture's images would live on until the
+    /// unit's next draw.
+    pub(super) fn forget_snapshots(&self) {
+        *self.textures.snapshots.borrow_mut() = Default::default();
     }
 
-    /// A snapshot of the cube map bound to `unit` for sampling, `None` when it is not cube
-    /// complete.
-    pub(super) fn unit_cube_sampler(
+    /// The snapshot of the 2D texture or (`cube`) the cube map bound to `unit`, with the
+    /// unit's level-of-detail `bias`; `None` when it is not complete. The same `Arc` as
+    /// the last draw's while nothing about the texture or the bias changed.
+    pub(super) fn unit_snapshot(
         &self,
         unit: usize,
+        cube: bool,
+        bias: f32,
     ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
-        self.bound_sampler(&self.textures.bound_cube[unit], &self.textures.default_cube)
-    }
-
-    fn bound_sampler(
-        &self,
-        bound: &Binding,
-        default: &Texture,
-    ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
-        if bound.is_none() {
-            default.sampler()
+        let (bound, default) = if cube {
+            (&self.textures.bound_cube[unit], &self.textures.default_cube)
         } else {
-            lock_objects(&self.shared).textures.get(bound)?.sampler()
+            (&self.textures.bound[unit], &self.textures.default)
+        };
+        let objects;
+        let texture = if bound.is_none() {
+            default
+        } else {
+            objects = lock_objects(&self.shared);
+            objects.textures.get(bound)?
+        };
+        let key = (texture.version(), cube, bias.to_bits());
+        let mut cache = self.textures.snapshots.borrow_mut();
+        if let Some(s) = cache[unit].as_ref().filter(|s| s.key == key) {
+            return s.sampler.clone();
         }
+        let sampler = texture.sampler().map(|s| s.with_lod_bias(bias));
+        cache[unit] = Some(Snapshot {
+            key,
+            sampler: sampler.clone(),
+        });
+        sampler
     }
 
     /// Runs `f` on the texture bound to the active unit's target for image `face` (0: 2D,

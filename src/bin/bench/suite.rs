@@ -27,7 +27,7 @@ use GLES_CM::gles::types::GLenum;
 
 /// The GL scenes, in table order: the main ones, the app-class ones (each at RGB565 with
 /// dithering, the default state, and at RGBA8888), then those only the scaling table uses.
-pub const NAMES: [&str; 30] = [
+pub const NAMES: [&str; 32] = [
     "clear-640",
     "flat-640",
     "smooth-640",
@@ -52,6 +52,8 @@ pub const NAMES: [&str; 30] = [
     "ui-2d-8888",
     "draws-10k-565",
     "draws-10k-8888",
+    "state-churn-565",
+    "state-churn-8888",
     "smooth-320",
     "lit-offscreen",
     "tris-1k",
@@ -60,8 +62,14 @@ pub const NAMES: [&str; 30] = [
     "tris-1m",
 ];
 
-/// The M3G scene (not a GL scene: it goes through `m3g::Graphics3D`).
+/// The M3G scenes (not GL scenes: they go through `m3g::Graphics3D`): one animated file,
+/// and every file of the corpus.
 pub const M3G: &str = "m3g-robot";
+pub const M3G_CORPUS: &str = "m3g-corpus";
+
+pub fn is_m3g(name: &str) -> bool {
+    name == M3G || name == M3G_CORPUS
+}
 
 /// The hint modes: every `glHint` target (perspective correction, point and line smoothing,
 /// fog) set to one value.
@@ -380,6 +388,8 @@ impl Scene {
             "ui-2d-8888" => ui_2d(ColorFormat::Rgba8888),
             "draws-10k-565" => draws(ColorFormat::Rgb565),
             "draws-10k-8888" => draws(ColorFormat::Rgba8888),
+            "state-churn-565" => state_churn(ColorFormat::Rgb565),
+            "state-churn-8888" => state_churn(ColorFormat::Rgba8888),
             _ => return None,
         })
     }
@@ -2064,6 +2074,106 @@ fn draws(format: ColorFormat) -> Scene {
             Op::Projection(pixel_ortho(w, h)),
             Op::Enable(Cap::DepthTest, false),
             Op::ColorArray(false),
+        ],
+        frame,
+    }
+}
+
+/// The cost of a state change: 8 192 draws of one 8 × 8-pixel quad, each under its own
+/// modelview, with one of blending, the depth test, texturing and lighting toggled before
+/// every draw (in turn), so every draw sees a new fragment key, texture or lighting setup
+/// while the rest of the state stays as it was. Each capability is toggled an even number
+/// of times, so every frame starts from the same state.
+fn state_churn(format: ColorFormat) -> Scene {
+    const DRAWS: usize = 8192;
+    let (w, h) = (640, 480);
+    let mut rng = Lcg(4_004);
+    let mut a = Arrays::default();
+    let quad = a.rect([0.0, 0.0, 8.0, 8.0], [0.0, 0.0, 1.0, 1.0]);
+    let mut frame = Vec::with_capacity(DRAWS * 3);
+    let mut on = [false; 4];
+    for k in 0..DRAWS {
+        let x = (rng.next() * (w - 8) as f32).floor();
+        let y = (rng.next() * (h - 8) as f32).floor();
+        // Depths on a 1/64 grid, so ties (which fail GL_LESS) are exact at 16 bits too.
+        let z = ((rng.next() * 2.0 - 1.0) * 0.9 * 64.0).floor() / 64.0;
+        frame.push(Op::Modelview(Mat4::from_translation(Vec3::new(x, y, z))));
+        let which = k % 4;
+        on[which] = !on[which];
+        frame.push(match which {
+            0 => Op::Enable(Cap::Blend, on[0]),
+            1 => Op::Enable(Cap::DepthTest, on[1]),
+            2 => Op::Texture {
+                unit: 0,
+                tex: on[2].then_some(0),
+                env: modulate(),
+                coord_replace: false,
+            },
+            _ => Op::Enable(Cap::Lighting, on[3]),
+        });
+        frame.push(Op::Color([
+            0.3 + rng.next() * 0.7,
+            0.3 + rng.next() * 0.7,
+            0.3 + rng.next() * 0.7,
+            0.4 + rng.next() * 0.6,
+        ]));
+        frame.push(draw(quad.0, quad.1));
+    }
+    let texture = Tex::new(8, MinFilter::Nearest, MagFilter::Nearest, |x, y| {
+        let c = if (x + y) % 2 == 0 { 255 } else { 128 };
+        [c, 255 - x as u8 * 16, 128 + y as u8 * 16, 200]
+    });
+    Scene {
+        summary: format!(
+            "{DRAWS} draws of a 2-triangle 8x8-pixel quad, a glLoadMatrixf, a glColor4f and one \
+             of GL_BLEND, GL_DEPTH_TEST, GL_TEXTURE_2D (8x8, NEAREST, MODULATE) and GL_LIGHTING \
+             (one directional light, color material) toggled in turn between draws; {}, \
+             640x480; ns per draw",
+            bits_name(format)
+        ),
+        class: Class::Main,
+        width: w,
+        height: h,
+        format,
+        dither: true,
+        unit: Unit::Draws,
+        work: DRAWS as f64,
+        vertices: (DRAWS * 6) as f64,
+        pixels: (DRAWS * 64) as f64,
+        clear_color: [0.0, 0.0, 0.0, 1.0],
+        position: Attr::float(&a.pos, 3),
+        color: None,
+        normal: Some(Attr::float(&a.nrm, 3)),
+        texcoord: [Some(Attr::float(&a.tc, 2)), None],
+        indices: Vec::new(),
+        buffers: false,
+        textures: vec![texture],
+        lighting: Some(LightSetup {
+            lights: vec![DirLight {
+                direction: [0.3, 0.4, 1.0],
+                point: false,
+                ambient: [0.1, 0.1, 0.1, 1.0],
+                diffuse: [0.9, 0.9, 0.9, 1.0],
+                specular: [0.0, 0.0, 0.0, 1.0],
+            }],
+            model_ambient: [0.2, 0.2, 0.2, 1.0],
+            specular: [0.0, 0.0, 0.0, 1.0],
+            shininess: 0.0,
+        }),
+        fog: None,
+        setup: vec![
+            Op::Projection(pixel_ortho(w, h)),
+            Op::BlendFunc(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha),
+            Op::Enable(Cap::DepthTest, false),
+            Op::Enable(Cap::Blend, false),
+            Op::Enable(Cap::Lighting, false),
+            Op::ColorArray(false),
+            Op::Texture {
+                unit: 0,
+                tex: None,
+                env: modulate(),
+                coord_replace: false,
+            },
         ],
         frame,
     }

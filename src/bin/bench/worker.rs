@@ -669,3 +669,120 @@ pub fn run_m3g(file: &Path, image_ms: i32) -> Result<(), String> {
     };
     serve(&mut m)
 }
+
+/// Tiles per row of the `m3g-corpus` mosaic.
+pub const MOSAIC_COLUMNS: usize = 4;
+
+/// The corpus files (`*.m3g` of `dir`), sorted by name.
+pub fn corpus_files(dir: &Path) -> Result<Vec<PathBuf>, String> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| format!("{}: {e}", dir.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "m3g"))
+        .collect();
+    files.sort();
+    if files.is_empty() {
+        return Err(format!("no .m3g file in {}", dir.display()));
+    }
+    Ok(files)
+}
+
+/// `tiles` (all the same size) side by side, [`MOSAIC_COLUMNS`] a row, the first row at the
+/// top; tiles missing from the last row are opaque black. Rows are bottom-up, as in a target.
+pub fn mosaic(tiles: &[GLES_CM::core::Target]) -> GLES_CM::core::Target {
+    use GLES_CM::core::Target;
+    let (w, h) = tiles
+        .first()
+        .map_or((1, 1), |t| (t.width() as usize, t.height() as usize));
+    let rows = tiles.len().div_ceil(MOSAIC_COLUMNS).max(1);
+    let format = tiles
+        .first()
+        .map_or_else(|| crate::suite::target(1, 1).format(), Target::format);
+    let mut out = Target::new((w * MOSAIC_COLUMNS) as u32, (h * rows) as u32, format);
+    out.color_mut().fill(0xff00_0000);
+    let stride = w * MOSAIC_COLUMNS;
+    for (i, tile) in tiles.iter().enumerate() {
+        let (col, row) = (i % MOSAIC_COLUMNS, i / MOSAIC_COLUMNS);
+        let y0 = (rows - 1 - row) * h;
+        for (y, src) in tile.color().chunks(w).enumerate() {
+            let at = (y0 + y) * stride + col * w;
+            out.color_mut()[at..at + w].copy_from_slice(src);
+        }
+    }
+    out
+}
+
+/// The `m3g-corpus` scene: every file of the corpus in `dir` loaded once; each frame
+/// animates every World to t = 0 and renders it through `Graphics3D` into its own 240 × 320
+/// target (the corpus references' size and conditions); the image is the [`mosaic`] of them.
+pub fn run_m3g_corpus(dir: &Path) -> Result<(), String> {
+    use GLES_CM::core::{ColorFormat, DepthFormat, Target, TargetFormat};
+    use GLES_CM::m3g::{Graphics3D, Loader, Object3DExt, World};
+
+    let mut worlds = Vec::new();
+    for file in corpus_files(dir)? {
+        let roots = Loader::load_path(&file).map_err(|e| format!("{}: {e}", file.display()))?;
+        let world = roots
+            .iter()
+            .find_map(|r| r.downcast::<World>())
+            .ok_or_else(|| format!("{}: no World", file.display()))?;
+        worlds.push(world);
+    }
+    say(&format!(
+        "renderer GLES_CM m3g ({} threads)",
+        GLES_CM::core::bin::thread_count()
+    ));
+    struct Corpus {
+        worlds: Vec<World>,
+        g: Graphics3D,
+        targets: Vec<Option<Target>>,
+    }
+    impl Corpus {
+        fn render(&mut self) -> Result<(), String> {
+            for (world, slot) in self.worlds.iter().zip(&mut self.targets) {
+                world.animate(0).map_err(|e| format!("animate: {e}"))?;
+                let t = slot.take().ok_or("no target")?;
+                self.g.bind_target(t, true, 0).map_err(|e| e.to_string())?;
+                let r = self.g.render_world(world);
+                *slot = self.g.release_target();
+                r.map_err(|e| format!("render: {e}"))?;
+            }
+            Ok(())
+        }
+    }
+    impl Frames for Corpus {
+        fn frame(&mut self) {
+            if let Err(e) = self.render() {
+                eprintln!("{e}");
+                std::process::exit(1);
+            }
+        }
+
+        fn pixels(&mut self) -> Result<Vec<u8>, String> {
+            self.render()?;
+            let tiles: Vec<Target> = self.targets.iter().flatten().cloned().collect();
+            if tiles.len() != self.worlds.len() {
+                return Err("a target was lost".into());
+            }
+            let m = mosaic(&tiles);
+            Ok(m.color().iter().flat_map(|w| w.to_le_bytes()).collect())
+        }
+
+        fn buffer_bytes(&self) -> usize {
+            240 * 320 * 6 * self.worlds.len()
+        }
+    }
+    let format = TargetFormat {
+        color: ColorFormat::Rgba8888,
+        depth: Some(DepthFormat::D16),
+        stencil_bits: 0,
+    };
+    let mut g = Graphics3D::new();
+    // The corpus references were rendered with Mesa's late clamp.
+    g.set_clamp_after_lighting(false);
+    let targets = worlds
+        .iter()
+        .map(|_| Some(Target::new(240, 320, format)))
+        .collect();
+    serve(&mut Corpus { worlds, g, targets })
+}

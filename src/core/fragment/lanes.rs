@@ -191,22 +191,32 @@ fn smooth_words(interp: &SpanInterp, i0: usize, format: ColorFormat) -> Option<L
     }
 }
 
-/// The stored colors of a group as values in [0, 1] (see `decode`).
+/// The stored colors of a group as values in [0, 1] (see `decode`). `fast` (the
+/// `GL_FASTEST` perspective hint) lets narrow channels be scaled by a rounded reciprocal
+/// instead of divided: at most 1 ulp apart, far below a step of any format, and no
+/// division per channel and group (see `decode_channel`).
 #[inline(always)]
-fn decode_lanes(format: ColorFormat, w: &Lane<u32>, out: &mut Channels) {
+fn decode_lanes(format: ColorFormat, w: &Lane<u32>, out: &mut Channels, fast: bool) {
     match format {
+        // One call per channel with its shift a constant: a loop over the channels with the
+        // shift as its variable stayed scalar.
         ColorFormat::Rgba8888 | ColorFormat::Rgb888 => {
-            for (c, out) in out.iter_mut().enumerate() {
-                for (o, w) in out.iter_mut().zip(w) {
-                    *o = ((w >> (8 * c)) & 0xFF) as i32 as f32 * INV_255;
-                }
-            }
+            out[0] = decode_byte::<0>(w);
+            out[1] = decode_byte::<8>(w);
+            out[2] = decode_byte::<16>(w);
+            out[3] = decode_byte::<24>(w);
         }
         // One arm per format, with the bit counts as constants.
-        ColorFormat::Rgb565 => decode_narrow::<5, 6, 5, 0>(w, out),
-        ColorFormat::Rgba4444 => decode_narrow::<4, 4, 4, 4>(w, out),
-        ColorFormat::Rgba5551 => decode_narrow::<5, 5, 5, 1>(w, out),
+        ColorFormat::Rgb565 => decode_narrow::<5, 6, 5, 0>(w, out, fast),
+        ColorFormat::Rgba4444 => decode_narrow::<4, 4, 4, 4>(w, out, fast),
+        ColorFormat::Rgba5551 => decode_narrow::<5, 5, 5, 1>(w, out, fast),
     }
+}
+
+/// The byte at `SHIFT` of every word over 255, as `decode` divides an 8-bit channel.
+#[inline(always)]
+fn decode_byte<const SHIFT: u32>(w: &Lane<u32>) -> Lane<f32> {
+    std::array::from_fn(|j| ((w[j] >> SHIFT) & 0xFF) as i32 as f32 * INV_255)
 }
 
 /// [`decode_lanes`] for channels of R, G, B, A bits (0: absent, read as 1).
@@ -214,21 +224,29 @@ fn decode_lanes(format: ColorFormat, w: &Lane<u32>, out: &mut Channels) {
 fn decode_narrow<const R: u32, const G: u32, const B: u32, const A: u32>(
     w: &Lane<u32>,
     out: &mut Channels,
+    fast: bool,
 ) {
-    out[0] = decode_channel::<R>(w, 0);
-    out[1] = decode_channel::<G>(w, 8);
-    out[2] = decode_channel::<B>(w, 16);
-    out[3] = decode_channel::<A>(w, 24);
+    out[0] = decode_channel::<R>(w, 0, fast);
+    out[1] = decode_channel::<G>(w, 8, fast);
+    out[2] = decode_channel::<B>(w, 16, fast);
+    out[3] = decode_channel::<A>(w, 24, fast);
 }
 
 /// One channel of N bits stored at byte `shift`: the n-bit value, which is the stored
-/// byte's top n bits, over 2ⁿ − 1, divided as `decode` divides.
+/// byte's top n bits, over 2ⁿ − 1, divided as `decode` divides. With `fast`, multiplied
+/// by 1 / (2ⁿ − 1) instead: no f32 constant makes that product equal the quotient for
+/// every n-bit value, so the exact routes keep the division (the slowest instruction of a
+/// blended group on a narrow target).
 #[inline(always)]
-fn decode_channel<const N: u32>(w: &Lane<u32>, shift: u32) -> Lane<f32> {
+fn decode_channel<const N: u32>(w: &Lane<u32>, shift: u32, fast: bool) -> Lane<f32> {
     if N == 0 {
         return [1.0; LANES];
     }
     let max = ((1u32 << N) - 1) as f32;
+    if fast {
+        let inv = 1.0 / max;
+        return std::array::from_fn(|j| (((w[j] >> shift) & 0xFF) >> (8 - N)) as i32 as f32 * inv);
+    }
     std::array::from_fn(|j| (((w[j] >> shift) & 0xFF) >> (8 - N)) as i32 as f32 / max)
 }
 
@@ -513,7 +531,7 @@ fn shade_words<const BLEND: bool>(
     if BLEND {
         let b = k.blend.expect("BLEND routes blend");
         let mut dst: Channels = [[0.0; LANES]; 4];
-        decode_lanes(k.color, color, &mut dst);
+        decode_lanes(k.color, color, &mut dst, k.perspective == Quality::Fastest);
         blend_lanes(&b, src, &mut dst);
         encode_lanes(k.color, &dst, thresholds)
     } else {
@@ -1462,7 +1480,7 @@ mod tests {
                 let t: Lane<f32> = std::array::from_fn(|j| dither_threshold(x0 + j as i32, y));
                 let dithered = encode_lanes(format, &c, Some(&t));
                 let mut back: Channels = [[0.0; LANES]; 4];
-                decode_lanes(format, &words, &mut back);
+                decode_lanes(format, &words, &mut back, false);
                 for j in 0..LANES {
                     let px = [c[0][j], c[1][j], c[2][j], c[3][j]];
                     assert_eq!(words[j], format.encode(px), "{format:?} {px:?}");
@@ -1474,6 +1492,36 @@ mod tests {
                     for ch in 0..4 {
                         assert_eq!(back[ch][j].to_bits(), want[ch].to_bits(), "{format:?}");
                     }
+                }
+            }
+        }
+    }
+
+    /// The FASTEST decode reads every stored narrow value back within 1 ulp of the exact
+    /// one, and re-encodes it to the same word: a pixel blended with nothing changes not.
+    #[test]
+    fn fast_decode_stays_within_an_ulp_and_round_trips() {
+        for format in [
+            ColorFormat::Rgb565,
+            ColorFormat::Rgba4444,
+            ColorFormat::Rgba5551,
+        ] {
+            let words: Vec<u32> = (0..=0xFFFFu32)
+                .map(|v| format.encode(decode(format, v.wrapping_mul(0x9E37_79B9))))
+                .collect();
+            for chunk in words.chunks(LANES) {
+                let mut w = [0u32; LANES];
+                w[..chunk.len()].copy_from_slice(chunk);
+                let (mut exact, mut fast): (Channels, Channels) = Default::default();
+                decode_lanes(format, &w, &mut exact, false);
+                decode_lanes(format, &w, &mut fast, true);
+                for j in 0..LANES {
+                    for ch in 0..4 {
+                        let (e, f) = (exact[ch][j], fast[ch][j]);
+                        assert!(e.to_bits().abs_diff(f.to_bits()) <= 1, "{format:?} {e} {f}");
+                    }
+                    let px = [fast[0][j], fast[1][j], fast[2][j], fast[3][j]];
+                    assert_eq!(format.encode(px), w[j], "{format:?}");
                 }
             }
         }
