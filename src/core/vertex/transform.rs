@@ -294,23 +294,11 @@ impl<'s, 'd> Stage<'s, 'd> {
         let mut p = [[0.0; LANES]; 4];
         let mut n = [[0.0; LANES]; 3];
         let mut given = [[0.0; LANES]; 4];
-        for k in 0..LANES {
-            let i = idx[k];
-            let v = self.draw.position.fetch_vec4(i).to_array();
-            for r in 0..4 {
-                p[r][k] = v[r];
-            }
-            if self.need_normal {
-                let v = self.draw.normal.fetch_vec4(i).to_array();
-                for r in 0..3 {
-                    n[r][k] = v[r];
-                }
-            }
-            let v = self.draw.color.fetch_vec4(i).to_array();
-            for r in 0..4 {
-                given[r][k] = v[r];
-            }
+        self.draw.position.gather(idx, &mut p);
+        if self.need_normal {
+            self.draw.normal.gather(idx, &mut n);
         }
+        self.draw.color.gather(idx, &mut given);
         let pos = mat4_lanes(&self.mvp, &p);
         let eye = if self.need_eye {
             mat4_lanes(&self.modelview, &p)
@@ -375,12 +363,16 @@ impl<'s, 'd> Stage<'s, 'd> {
             v.eye = Vec3::new(eye[0][k], eye[1][k], eye[2][k]);
         }
         if self.tex_varies {
-            for (&i, v) in idx.iter().zip(out.iter_mut()) {
-                // Without texgen (not batched) a unit that varies is an array.
-                for (t, src) in v.tex.iter_mut().zip(&self.tex) {
-                    if let TexSource::Array(a, matrix) = *src {
-                        let tc = a.fetch_vec4(i);
-                        *t = matrix.map_or(tc, |m| m * tc);
+            // Without texgen (not batched) a unit that varies is an array.
+            for (u, src) in self.tex.iter().enumerate() {
+                if let TexSource::Array(a, matrix) = *src {
+                    let mut tc = [[0.0; LANES]; 4];
+                    a.gather(idx, &mut tc);
+                    if let Some(m) = matrix {
+                        tc = mat4_lanes(&m, &tc);
+                    }
+                    for (k, v) in out.iter_mut().enumerate().take(LANES) {
+                        store_lane(&mut v.tex[u], &tc, k);
                     }
                 }
             }
@@ -637,6 +629,147 @@ mod tests {
                 let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
                 stage.write(i, &mut one);
                 assert_eq!(bits(&v[i]), bits(&one), "case {case}, vertex {i}");
+            }
+        }
+    }
+
+    #[test]
+    fn batched_lanes_match_one_vertex_for_every_array_type_and_stride() {
+        use crate::core::state::{Light, Lighting};
+        // Pseudo-random bytes read as every type: as floats they include NaN, infinities
+        // and subnormals. 21 vertices: two full groups and a short one.
+        let n = 21;
+        let mut x = 0x9e37_79b9_7f4a_7c15_u64;
+        let raw: Vec<u8> = (0..64 * n)
+            .map(|_| {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                (x >> 24) as u8
+            })
+            .collect();
+        use ComponentType::*;
+        // (type, size, stride) per array; stride 0 stands for tightly packed.
+        let layouts: [[(ComponentType, usize, usize); 4]; 8] = [
+            // position, normal, color, texcoord
+            [
+                (Byte, 3, 0),
+                (Byte, 3, 0),
+                (UnsignedByte, 4, 0),
+                (Byte, 2, 0),
+            ],
+            [(Short, 4, 0), (Short, 3, 0), (Fixed, 4, 0), (Short, 3, 0)],
+            [
+                (Fixed, 2, 0),
+                (Fixed, 3, 0),
+                (UnsignedByte, 4, 7),
+                (Fixed, 4, 0),
+            ],
+            [
+                (Float, 2, 20),
+                (Float, 3, 16),
+                (Float, 4, 24),
+                (Float, 2, 12),
+            ],
+            [
+                (Byte, 4, 5),
+                (Short, 3, 9),
+                (UnsignedByte, 4, 13),
+                (Short, 2, 6),
+            ],
+            [(Short, 2, 0), (Byte, 3, 3), (Fixed, 4, 20), (Byte, 4, 0)],
+            [
+                (Fixed, 3, 0),
+                (Fixed, 3, 14),
+                (UnsignedByte, 4, 4),
+                (Fixed, 2, 8),
+            ],
+            [
+                (Float, 3, 12),
+                (Float, 3, 12),
+                (Float, 4, 16),
+                (Float, 3, 0),
+            ],
+        ];
+        for (l, layout) in layouts.iter().enumerate() {
+            let arrays: Vec<AttribArray<'_>> = layout
+                .iter()
+                .enumerate()
+                .map(|(which, &(ty, size, stride))| {
+                    let stride = if stride == 0 {
+                        size * ty.size()
+                    } else {
+                        stride
+                    };
+                    // A different offset per array; in the last layout each array ends one
+                    // byte short, so its last element reads as the default.
+                    let end = if l == 7 {
+                        which * 3 + AttribArray::bytes_needed(ty, size, stride, n) - 1
+                    } else {
+                        raw.len()
+                    };
+                    AttribArray {
+                        data: &raw[which * 3..end],
+                        ty,
+                        size,
+                        stride,
+                        // Colors and normals are normalized, as the GL draws them.
+                        normalized: which == 1 || which == 2,
+                    }
+                })
+                .collect();
+            for case in 0..8u32 {
+                let mut s = RenderState::new(8, 8);
+                s.modelview =
+                    Mat4::from_rotation_y(0.7) * Mat4::from_scale(Vec3::new(1.0, 2.0, 0.5));
+                s.projection = Mat4::perspective_rh_gl(0.9, 1.3, 0.5, 20.0);
+                s.normalize = case & 1 != 0;
+                if case & 2 != 0 {
+                    let mut lt = Lighting {
+                        lights: vec![Light {
+                            diffuse: Vec4::new(0.9, 0.7, 0.5, 1.0),
+                            specular: Vec4::ONE,
+                            position: Vec4::new(0.3, 0.5, 1.0, 0.0),
+                            ..Light::default()
+                        }],
+                        color_material: case & 4 != 0,
+                        two_side: true,
+                        ..Lighting::default()
+                    };
+                    lt.front.specular = Vec4::new(0.5, 0.6, 0.7, 1.0);
+                    lt.front.shininess = 12.0;
+                    s.lighting = Some(lt);
+                }
+                if case & 4 != 0 {
+                    s.texture_matrices[0] = Mat4::from_rotation_z(0.3);
+                }
+                let mut d = DrawCall::new(
+                    Primitive::Triangles,
+                    Indices::Range { first: 0, count: n },
+                    arrays[0],
+                );
+                d.normal = AttribSource::Array(arrays[1]);
+                d.color = AttribSource::Array(arrays[2]);
+                d.texcoord[0] = AttribSource::Array(arrays[3]);
+                d.texcoord[1] = AttribSource::Array(arrays[0]);
+                let stage = Stage::new(&s, &d);
+                assert!(stage.batched);
+                let v = run(&s, &d).unwrap();
+                for i in 0..n {
+                    let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
+                    stage.write(i, &mut one);
+                    assert_eq!(
+                        bits(&v[i]),
+                        bits(&one),
+                        "layout {l}, case {case}, vertex {i}"
+                    );
+                    // And the conversion is the scalar fetch's, component by component.
+                    assert_eq!(
+                        one.tex[1].to_array().map(f32::to_bits),
+                        arrays[0].fetch(i).map(f32::to_bits),
+                        "layout {l}, vertex {i}"
+                    );
+                }
             }
         }
     }
