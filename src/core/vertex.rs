@@ -5,7 +5,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::clip::MAX_USER_PLANES;
+use super::clip::{self, MAX_USER_PLANES};
 use super::fixed;
 use super::state::RenderState;
 use super::{OutOfMemory, TEXTURE_UNITS};
@@ -618,6 +618,7 @@ fn fill(
         return;
     }
     let mut numbers = numbers;
+    let light_all = stage.deferred.is_none();
     for chunk in list[start..].chunks_mut(LANES) {
         // A short last group repeats its first vertex in the unused lanes.
         let mut idx = [0; LANES];
@@ -627,7 +628,59 @@ fn fill(
         for k in chunk.len()..LANES {
             idx[k] = idx[0];
         }
-        stage.write_lanes(&idx, chunk);
+        stage.write_lanes(&idx, chunk, light_all);
+    }
+    let Some(d) = stage.deferred else {
+        return;
+    };
+    // The vertex numbers are the dense range first ..= first + count − 1; the vertices to
+    // light are gathered into full groups.
+    let vertices = &mut list[start..];
+    let mut idx = [0; LANES];
+    let mut m = 0;
+    for p in 0..count / d.step {
+        let at = p * d.step;
+        if d.step == 3 && clip::rejects(&vertices[at], &vertices[at + 1], &vertices[at + 2]) {
+            continue;
+        }
+        let from = if d.provoking_only { d.step - 1 } else { 0 };
+        for k in from..d.step {
+            idx[m] = d.first + at + k;
+            m += 1;
+            if m == LANES {
+                light(stage, vertices, d.first, &idx, m);
+                m = 0;
+            }
+        }
+    }
+    if m > 0 {
+        for k in m..LANES {
+            idx[k] = idx[0];
+        }
+        light(stage, vertices, d.first, &idx, m);
+    }
+}
+
+/// Lights the first `m` of vertices `idx` (all `LANES` computed) in `vertices`, which
+/// starts at vertex number `first`.
+#[inline(always)]
+fn light(
+    stage: &transform::Stage<'_, '_>,
+    vertices: &mut [ClipVertex],
+    first: usize,
+    idx: &[usize; LANES],
+    m: usize,
+) {
+    let (color, back_color) = stage.colors_lanes(idx, true);
+    for (k, &i) in idx.iter().enumerate().take(m) {
+        let v = &mut vertices[i - first];
+        v.color = Vec4::new(color[0][k], color[1][k], color[2][k], color[3][k]);
+        v.back_color = Vec4::new(
+            back_color[0][k],
+            back_color[1][k],
+            back_color[2][k],
+            back_color[3][k],
+        );
     }
 }
 
