@@ -175,6 +175,23 @@ pub fn point(v: &ClipVertex, user: usize) -> bool {
     v.pos.is_finite() && distances(v)[..plane_count(user)].iter().all(|&d| d >= 0.0)
 }
 
+/// Whether [`triangle`] drops (a, b, c) from the positions alone, before any clipping: the
+/// vertex stage lights no vertex of such a triangle.
+#[inline]
+pub fn rejects(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex) -> bool {
+    // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
+    // than let NaN reach the rasterizer.
+    if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
+        return true;
+    }
+    // Outside one of the frustum's x or y planes with all three vertices, the triangle is
+    // outside it everywhere (the plane's half-space is convex, whatever the signs of w), so
+    // it could only cover pixels beyond the viewport, which the rasterizer never draws.
+    // Most such triangles lie inside the guard band and would otherwise be set up in full
+    // only for their bounding box to come out empty.
+    frustum_code(a) & frustum_code(b) & frustum_code(c) != 0
+}
+
 /// Clips triangle (a, b, c) against the guard band, the near, far and w planes and the first
 /// `user` user planes, and calls `emit` with the resulting convex polygon (at least three
 /// vertices, in the original winding), or not at all when nothing is left. The polygon is
@@ -187,17 +204,7 @@ pub fn triangle(
     user: usize,
     emit: impl FnOnce(&[&ClipVertex]),
 ) {
-    // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
-    // than let NaN reach the rasterizer.
-    if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
-        return;
-    }
-    // Outside one of the frustum's x or y planes with all three vertices, the triangle is
-    // outside it everywhere (the plane's half-space is convex, whatever the signs of w), so
-    // it could only cover pixels beyond the viewport, which the rasterizer never draws.
-    // Most such triangles lie inside the guard band and would otherwise be set up in full
-    // only for their bounding box to come out empty.
-    if frustum_code(a) & frustum_code(b) & frustum_code(c) != 0 {
+    if rejects(a, b, c) {
         return;
     }
     let codes = [outcode(a, user), outcode(b, user), outcode(c, user)];

@@ -5,7 +5,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::clip::MAX_USER_PLANES;
+use super::clip::{self, MAX_USER_PLANES};
 use super::fixed;
 use super::state::RenderState;
 use super::{OutOfMemory, TEXTURE_UNITS};
@@ -13,7 +13,7 @@ use super::{OutOfMemory, TEXTURE_UNITS};
 pub mod lighting;
 mod transform;
 
-use lighting::LANES;
+use lighting::{Lanes, LANES};
 
 /// The component types vertex arrays can hold.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -107,49 +107,157 @@ impl AttribArray<'_> {
         Vec4::new(f(0), f(4), z, w)
     }
 
+    /// Element `i` of any format, through the monomorphized fetch for its format.
     #[inline(never)]
     fn fetch_any(&self, i: usize) -> [f32; 4] {
-        let mut out = DEFAULT;
-        let n = self.ty.size();
-        let size = self.size.min(4);
-        let base = i * self.stride;
-        // The components are contiguous, so one check covers them all; the type is matched
-        // once per element rather than per component.
-        let Some(b) = self.data.get(base..base + size * n) else {
-            return DEFAULT;
-        };
-        let convert = |f: fn(&[u8]) -> f32, out: &mut [f32; 4]| {
-            for (o, c) in out.iter_mut().zip(b.chunks_exact(n)) {
-                *o = f(c);
-            }
-        };
+        (self.element_fn())(self.data, self.stride, i)
+    }
+
+    /// The array's format as a [`format`] constant.
+    #[inline]
+    fn format(&self) -> u8 {
+        use format::*;
         match (self.ty, self.normalized) {
-            (ComponentType::Float, _) => {
-                for (o, c) in out.iter_mut().zip(b.chunks_exact(4)) {
-                    *o = f32::from_ne_bytes([c[0], c[1], c[2], c[3]]);
-                }
-            }
-            (ComponentType::Fixed, _) => {
-                for (o, c) in out.iter_mut().zip(b.chunks_exact(4)) {
-                    *o = fixed::to_f32(i32::from_ne_bytes([c[0], c[1], c[2], c[3]]));
-                }
-            }
-            (ComponentType::UnsignedByte, true) => convert(|c| c[0] as f32 / 255.0, &mut out),
-            (ComponentType::UnsignedByte, false) => convert(|c| c[0] as f32, &mut out),
-            // Signed normalization as GL 1.x defines it: (2c + 1) / (2ⁿ − 1).
-            (ComponentType::Byte, true) => {
-                convert(|c| (2.0 * (c[0] as i8) as f32 + 1.0) / 255.0, &mut out)
-            }
-            (ComponentType::Byte, false) => convert(|c| (c[0] as i8) as f32, &mut out),
-            (ComponentType::Short, true) => convert(
-                |c| (2.0 * i16::from_ne_bytes([c[0], c[1]]) as f32 + 1.0) / 65535.0,
-                &mut out,
-            ),
-            (ComponentType::Short, false) => {
-                convert(|c| i16::from_ne_bytes([c[0], c[1]]) as f32, &mut out)
-            }
+            (ComponentType::Float, _) => FLOAT,
+            (ComponentType::Fixed, _) => FIXED,
+            (ComponentType::UnsignedByte, false) => UBYTE,
+            (ComponentType::UnsignedByte, true) => UBYTE_NORM,
+            (ComponentType::Byte, false) => BYTE,
+            (ComponentType::Byte, true) => BYTE_NORM,
+            (ComponentType::Short, false) => SHORT,
+            (ComponentType::Short, true) => SHORT_NORM,
         }
-        out
+    }
+
+    /// The one-element fetch for this array's format and size.
+    fn element_fn(&self) -> fn(&[u8], usize, usize) -> [f32; 4] {
+        macro_rules! sized {
+            ($f:expr) => {
+                match self.size {
+                    0 => element::<{ $f }, 0>,
+                    1 => element::<{ $f }, 1>,
+                    2 => element::<{ $f }, 2>,
+                    3 => element::<{ $f }, 3>,
+                    _ => element::<{ $f }, 4>,
+                }
+            };
+        }
+        use format::*;
+        match self.format() {
+            FLOAT => sized!(FLOAT),
+            FIXED => sized!(FIXED),
+            UBYTE => sized!(UBYTE),
+            UBYTE_NORM => sized!(UBYTE_NORM),
+            BYTE => sized!(BYTE),
+            BYTE_NORM => sized!(BYTE_NORM),
+            SHORT => sized!(SHORT),
+            _ => sized!(SHORT_NORM),
+        }
+    }
+
+    /// [`AttribSource::gather`] of an array.
+    #[inline]
+    pub fn gather<const N: usize>(&self, idx: &[usize; LANES], out: &mut [Lanes; N]) {
+        (self.gather_fn::<N>())(self, idx, out)
+    }
+
+    /// The `LANES`-element fetch for this array's format and size (see [`gather_as`]).
+    fn gather_fn<const N: usize>(&self) -> GatherFn<N> {
+        macro_rules! sized {
+            ($f:expr) => {
+                match self.size {
+                    0 => gather_as::<{ $f }, 0, N>,
+                    1 => gather_as::<{ $f }, 1, N>,
+                    2 => gather_as::<{ $f }, 2, N>,
+                    3 => gather_as::<{ $f }, 3, N>,
+                    _ => gather_as::<{ $f }, 4, N>,
+                }
+            };
+        }
+        use format::*;
+        match self.format() {
+            FLOAT => sized!(FLOAT),
+            FIXED => sized!(FIXED),
+            UBYTE => sized!(UBYTE),
+            UBYTE_NORM => sized!(UBYTE_NORM),
+            BYTE => sized!(BYTE),
+            BYTE_NORM => sized!(BYTE_NORM),
+            SHORT => sized!(SHORT),
+            _ => sized!(SHORT_NORM),
+        }
+    }
+}
+
+type GatherFn<const N: usize> = fn(&AttribArray<'_>, &[usize; LANES], &mut [Lanes; N]);
+
+/// The element formats, as const parameters: one monomorphized fetch per format and size,
+/// chosen once per array (per 8 vertices in the batched path) instead of per component.
+mod format {
+    pub const FLOAT: u8 = 0;
+    pub const FIXED: u8 = 1;
+    pub const UBYTE: u8 = 2;
+    pub const UBYTE_NORM: u8 = 3;
+    pub const BYTE: u8 = 4;
+    pub const BYTE_NORM: u8 = 5;
+    pub const SHORT: u8 = 6;
+    pub const SHORT_NORM: u8 = 7;
+
+    pub const fn bytes(f: u8) -> usize {
+        match f {
+            FLOAT | FIXED => 4,
+            SHORT | SHORT_NORM => 2,
+            _ => 1,
+        }
+    }
+}
+
+/// Component `k` of an element in format `F` (`b` starts at the element). Both the
+/// one-vertex and the batched fetch convert through this, so they agree bit for bit.
+#[inline(always)]
+fn component<const F: u8>(b: &[u8], k: usize) -> f32 {
+    use format::*;
+    let word = |k: usize| [b[4 * k], b[4 * k + 1], b[4 * k + 2], b[4 * k + 3]];
+    let short = |k: usize| i16::from_ne_bytes([b[2 * k], b[2 * k + 1]]);
+    match F {
+        FLOAT => f32::from_ne_bytes(word(k)),
+        FIXED => fixed::to_f32(i32::from_ne_bytes(word(k))),
+        UBYTE => b[k] as f32,
+        UBYTE_NORM => b[k] as f32 / 255.0,
+        BYTE => (b[k] as i8) as f32,
+        // Signed normalization as GL 1.x defines it: (2c + 1) / (2ⁿ − 1).
+        BYTE_NORM => (2.0 * (b[k] as i8) as f32 + 1.0) / 255.0,
+        SHORT => short(k) as f32,
+        _ => (2.0 * short(k) as f32 + 1.0) / 65535.0,
+    }
+}
+
+/// Element `i` of format `F` with `S` components, missing ones from the default; an
+/// element reaching outside `data` is the default.
+#[inline(always)]
+fn element<const F: u8, const S: usize>(data: &[u8], stride: usize, i: usize) -> [f32; 4] {
+    let base = i * stride;
+    let Some(b) = data.get(base..base + S * format::bytes(F)) else {
+        return DEFAULT;
+    };
+    let mut out = DEFAULT;
+    for (k, o) in out.iter_mut().enumerate().take(S) {
+        *o = component::<F>(b, k);
+    }
+    out
+}
+
+/// `LANES` elements into rows `out[component][lane]` (the first `N` components).
+#[inline(never)]
+fn gather_as<const F: u8, const S: usize, const N: usize>(
+    a: &AttribArray<'_>,
+    idx: &[usize; LANES],
+    out: &mut [Lanes; N],
+) {
+    for (k, &i) in idx.iter().enumerate() {
+        let v = element::<F, S>(a.data, a.stride, i);
+        for (row, v) in out.iter_mut().zip(v) {
+            row[k] = v;
+        }
     }
 }
 
@@ -174,6 +282,22 @@ impl AttribSource<'_> {
         match self {
             AttribSource::Array(a) => a.fetch_vec4(i),
             AttribSource::Constant(c) => Vec4::from_array(*c),
+        }
+    }
+
+    /// Elements `idx` as rows `out[component][lane]` (the first `N` components), bit for
+    /// bit what [`fetch`](Self::fetch) gives per element. The array's format is matched
+    /// once for all lanes, and every format has its own loop, so byte, short and 16.16
+    /// arrays cost the batched path no more than float ones.
+    #[inline]
+    pub fn gather<const N: usize>(&self, idx: &[usize; LANES], out: &mut [Lanes; N]) {
+        match self {
+            AttribSource::Array(a) => a.gather(idx, out),
+            AttribSource::Constant(c) => {
+                for (row, &v) in out.iter_mut().zip(c) {
+                    *row = [v; LANES];
+                }
+            }
         }
     }
 }
@@ -494,6 +618,7 @@ fn fill(
         return;
     }
     let mut numbers = numbers;
+    let light_all = stage.deferred.is_none();
     for chunk in list[start..].chunks_mut(LANES) {
         // A short last group repeats its first vertex in the unused lanes.
         let mut idx = [0; LANES];
@@ -503,7 +628,59 @@ fn fill(
         for k in chunk.len()..LANES {
             idx[k] = idx[0];
         }
-        stage.write_lanes(&idx, chunk);
+        stage.write_lanes(&idx, chunk, light_all);
+    }
+    let Some(d) = stage.deferred else {
+        return;
+    };
+    // The vertex numbers are the dense range first ..= first + count − 1; the vertices to
+    // light are gathered into full groups.
+    let vertices = &mut list[start..];
+    let mut idx = [0; LANES];
+    let mut m = 0;
+    for p in 0..count / d.step {
+        let at = p * d.step;
+        if d.step == 3 && clip::rejects(&vertices[at], &vertices[at + 1], &vertices[at + 2]) {
+            continue;
+        }
+        let from = if d.provoking_only { d.step - 1 } else { 0 };
+        for k in from..d.step {
+            idx[m] = d.first + at + k;
+            m += 1;
+            if m == LANES {
+                light(stage, vertices, d.first, &idx, m);
+                m = 0;
+            }
+        }
+    }
+    if m > 0 {
+        for k in m..LANES {
+            idx[k] = idx[0];
+        }
+        light(stage, vertices, d.first, &idx, m);
+    }
+}
+
+/// Lights the first `m` of vertices `idx` (all `LANES` computed) in `vertices`, which
+/// starts at vertex number `first`.
+#[inline(always)]
+fn light(
+    stage: &transform::Stage<'_, '_>,
+    vertices: &mut [ClipVertex],
+    first: usize,
+    idx: &[usize; LANES],
+    m: usize,
+) {
+    let (color, back_color) = stage.colors_lanes(idx, true);
+    for (k, &i) in idx.iter().enumerate().take(m) {
+        let v = &mut vertices[i - first];
+        v.color = Vec4::new(color[0][k], color[1][k], color[2][k], color[3][k]);
+        v.back_color = Vec4::new(
+            back_color[0][k],
+            back_color[1][k],
+            back_color[2][k],
+            back_color[3][k],
+        );
     }
 }
 
@@ -522,6 +699,40 @@ mod tests {
             normalized: true,
         };
         assert_eq!(a.fetch(0), [-1.0, 1.0, 1.0 / 255.0, 1.0]);
+        let a = AttribArray {
+            normalized: false,
+            size: 2,
+            ..a
+        };
+        assert_eq!(a.fetch(0), [-128.0, 127.0, 0.0, 1.0]);
+        let a = AttribArray {
+            ty: ComponentType::UnsignedByte,
+            normalized: true,
+            size: 4,
+            stride: 4,
+            ..a
+        };
+        assert_eq!(a.fetch(0), [0.0, 0.0, 0.0, 1.0], "4 bytes past 3");
+        let ub = [0u8, 255, 51, 128];
+        let a = AttribArray { data: &ub, ..a };
+        assert_eq!(a.fetch(0), [0.0, 1.0, 0.2, 128.0 / 255.0]);
+        let sh: Vec<u8> = [-32768i16, 32767, 7]
+            .iter()
+            .flat_map(|v| v.to_ne_bytes())
+            .collect();
+        let a = AttribArray {
+            data: &sh,
+            ty: ComponentType::Short,
+            size: 3,
+            stride: 6,
+            normalized: true,
+        };
+        assert_eq!(a.fetch(0), [-1.0, 1.0, 15.0 / 65535.0, 1.0]);
+        let a = AttribArray {
+            normalized: false,
+            ..a
+        };
+        assert_eq!(a.fetch(0), [-32768.0, 32767.0, 7.0, 1.0]);
         let fx: Vec<u8> = [0x10000i32, -0x8000]
             .iter()
             .flat_map(|v| v.to_ne_bytes())

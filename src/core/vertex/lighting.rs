@@ -365,12 +365,14 @@ mod tests {
         }
     }
 
-    /// Lights one vertex at `pos` with normal `n` through the whole vertex stage.
+    /// Lights one vertex at `pos` with normal `n` through the whole vertex stage. The draw
+    /// is one triangle of that vertex three times, indexed: a non-indexed draw of one
+    /// vertex forms no triangle, so no pixel reads its color and it is not lit.
     fn lit(state: &RenderState, pos: [f32; 3], n: [f32; 3]) -> super::super::ClipVertex {
         let bytes: Vec<u8> = pos.iter().flat_map(|v| v.to_ne_bytes()).collect();
         let mut call = DrawCall::new(
             Primitive::Triangles,
-            Indices::Range { first: 0, count: 1 },
+            Indices::U8(&[0, 0, 0]),
             AttribArray {
                 data: &bytes,
                 ty: ComponentType::Float,
@@ -541,7 +543,7 @@ mod tests {
         let bytes: Vec<u8> = [0f32; 3].iter().flat_map(|v| v.to_ne_bytes()).collect();
         let mut call = DrawCall::new(
             Primitive::Triangles,
-            Indices::Range { first: 0, count: 1 },
+            Indices::U8(&[0, 0, 0]),
             AttribArray {
                 data: &bytes,
                 ty: ComponentType::Float,

@@ -6,9 +6,9 @@
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use super::lighting::{max_ps, min_ps, Lanes, Prepared, LANES};
-use super::{AttribArray, AttribSource, ClipVertex, DrawCall, Primitive};
+use super::{AttribArray, AttribSource, ClipVertex, DrawCall, Indices, Primitive};
 use crate::core::clip::MAX_USER_PLANES;
-use crate::core::state::{RenderState, TexGen};
+use crate::core::state::{RenderState, ShadeModel, TexGen};
 use crate::core::TEXTURE_UNITS;
 
 /// The matrix that takes object-space normals to eye space: the inverse transpose of the
@@ -80,6 +80,29 @@ pub(super) struct Stage<'s, 'd> {
     template_tex: [Vec4; TEXTURE_UNITS],
     /// Some unit's coordinates are not constant.
     tex_varies: bool,
+    /// Flat-shaded lit primitives where every vertex provokes at most one of them
+    /// (non-indexed triangles and lines), as (first vertex, vertices per primitive): only
+    /// vertex first + k·step + step − 1 is lit. Flat shading reads no other vertex's color
+    /// (clipping and setup take the color of the original provoking vertex), so the
+    /// pixels are the same as with every vertex lit.
+    pub provoking: Option<(usize, usize)>,
+    /// The batched path lights after transforming, only the vertices whose colors are
+    /// read (see [`Deferred`]).
+    pub deferred: Option<Deferred>,
+}
+
+/// Lighting after the positions are known, for lit non-indexed triangles and flat-shaded
+/// lit lines, where vertex `first + k` belongs to primitive `k / step` alone: only the
+/// vertices of triangles that clipping does not drop outright
+/// ([`rejects`](crate::core::clip::rejects)), and of those only the provoking one under
+/// flat shading, are lit. No other vertex's color reaches a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Deferred {
+    pub first: usize,
+    /// Vertices per primitive: 3 (triangles) or 2 (lines).
+    pub step: usize,
+    /// Flat shading: only the last vertex of each primitive.
+    pub provoking_only: bool,
 }
 
 impl<'s, 'd> Stage<'s, 'd> {
@@ -111,6 +134,27 @@ impl<'s, 'd> Stage<'s, 'd> {
             _ => Vec4::new(0.0, 0.0, 0.0, 1.0),
         });
         let tex_varies = tex.iter().any(|t| !matches!(t, TexSource::Constant(_)));
+        let flat = state.shade_model == ShadeModel::Flat;
+        let provoking = match (draw.primitive, draw.indices) {
+            _ if !flat || lighting.is_none() => None,
+            (Primitive::Triangles, Indices::Range { first, .. }) => Some((first, 3)),
+            (Primitive::Lines, Indices::Range { first, .. }) => Some((first, 2)),
+            _ => None,
+        };
+        let deferred = match (draw.primitive, draw.indices) {
+            _ if !batched || lighting.is_none() => None,
+            (Primitive::Triangles, Indices::Range { first, .. }) => Some(Deferred {
+                first,
+                step: 3,
+                provoking_only: flat,
+            }),
+            (Primitive::Lines, Indices::Range { first, .. }) if flat => Some(Deferred {
+                first,
+                step: 2,
+                provoking_only: true,
+            }),
+            _ => None,
+        };
         Stage {
             state,
             draw,
@@ -143,6 +187,8 @@ impl<'s, 'd> Stage<'s, 'd> {
             planes: state.clip_planes.len().min(MAX_USER_PLANES),
             two_side,
             batched,
+            provoking,
+            deferred,
         }
     }
 
@@ -198,7 +244,7 @@ impl<'s, 'd> Stage<'s, 'd> {
         }
         let given = self.draw.color.fetch_vec4(i);
         let (color, back_color) = match &self.lighting {
-            Some(l) => {
+            Some(l) if self.lit(i) => {
                 let front = l.shade(eye, normal, given, false);
                 let back = if self.two_side {
                     l.shade(eye, -normal, given, true)
@@ -207,7 +253,7 @@ impl<'s, 'd> Stage<'s, 'd> {
                 };
                 (front, back)
             }
-            None => {
+            _ => {
                 let c = clamp01(given);
                 (c, c)
             }
@@ -290,68 +336,16 @@ impl<'s, 'd> Stage<'s, 'd> {
     /// transform, normalization and lighting vectorize across vertices. Only when
     /// `batched`.
     #[inline(always)]
-    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [ClipVertex]) {
+    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [ClipVertex], light: bool) {
         let mut p = [[0.0; LANES]; 4];
-        let mut n = [[0.0; LANES]; 3];
-        let mut given = [[0.0; LANES]; 4];
-        for k in 0..LANES {
-            let i = idx[k];
-            let v = self.draw.position.fetch_vec4(i).to_array();
-            for r in 0..4 {
-                p[r][k] = v[r];
-            }
-            if self.need_normal {
-                let v = self.draw.normal.fetch_vec4(i).to_array();
-                for r in 0..3 {
-                    n[r][k] = v[r];
-                }
-            }
-            let v = self.draw.color.fetch_vec4(i).to_array();
-            for r in 0..4 {
-                given[r][k] = v[r];
-            }
-        }
+        self.draw.position.gather(idx, &mut p);
         let pos = mat4_lanes(&self.mvp, &p);
         let eye = if self.need_eye {
             mat4_lanes(&self.modelview, &p)
         } else {
             [[0.0; LANES]; 4]
         };
-        let mut normal = [[0.0; LANES]; 3];
-        if self.need_normal {
-            let m = self.normal.to_cols_array_2d();
-            for r in 0..3 {
-                for k in 0..LANES {
-                    normal[r][k] =
-                        (m[0][r] * n[0][k] + m[1][r] * n[1][k] + m[2][r] * n[2][k]) * self.rescale;
-                }
-            }
-            if self.state.normalize {
-                normalize_lanes(&mut normal);
-            }
-        }
-        let (color, back_color) = match &self.lighting {
-            Some(l) => {
-                let front = l.shade_lanes(&normal, &given, false);
-                let back = if self.two_side {
-                    let mut reversed = normal;
-                    for v in reversed.iter_mut().flatten() {
-                        *v = -*v;
-                    }
-                    l.shade_lanes(&reversed, &given, true)
-                } else {
-                    front
-                };
-                (front, back)
-            }
-            None => {
-                let mut c = given;
-                for v in c.iter_mut().flatten() {
-                    *v = min_ps(max_ps(*v, 0.0), 1.0);
-                }
-                (c, c)
-            }
-        };
+        let (color, back_color) = self.colors_lanes(idx, light);
         // `out` holds `template()`: only what varies per vertex is written, component by
         // component (assembling vectors from lanes costs more than the stores).
         if self.points || self.planes > 0 {
@@ -362,7 +356,8 @@ impl<'s, 'd> Stage<'s, 'd> {
                     lane4(&color, k),
                     lane4(&back_color, k),
                     lane4(&eye, k),
-                    Vec3::new(normal[0][k], normal[1][k], normal[2][k]),
+                    // Only texgen reads the normal here, and with texgen nothing is batched.
+                    Vec3::ZERO,
                     v,
                 );
             }
@@ -375,15 +370,68 @@ impl<'s, 'd> Stage<'s, 'd> {
             v.eye = Vec3::new(eye[0][k], eye[1][k], eye[2][k]);
         }
         if self.tex_varies {
-            for (&i, v) in idx.iter().zip(out.iter_mut()) {
-                // Without texgen (not batched) a unit that varies is an array.
-                for (t, src) in v.tex.iter_mut().zip(&self.tex) {
-                    if let TexSource::Array(a, matrix) = *src {
-                        let tc = a.fetch_vec4(i);
-                        *t = matrix.map_or(tc, |m| m * tc);
+            // Without texgen (not batched) a unit that varies is an array.
+            for (u, src) in self.tex.iter().enumerate() {
+                if let TexSource::Array(a, matrix) = *src {
+                    let mut tc = [[0.0; LANES]; 4];
+                    a.gather(idx, &mut tc);
+                    if let Some(m) = matrix {
+                        tc = mat4_lanes(&m, &tc);
+                    }
+                    for (k, v) in out.iter_mut().enumerate().take(LANES) {
+                        store_lane(&mut v.tex[u], &tc, k);
                     }
                 }
             }
+        }
+    }
+
+    /// The front and back colors of vertices `idx` for [`write_lanes`](Self::write_lanes):
+    /// lit when lighting is on and `light` (see [`lit`](Self::lit)), otherwise the given
+    /// colors clamped.
+    #[inline(always)]
+    pub fn colors_lanes(&self, idx: &[usize; LANES], light: bool) -> ([Lanes; 4], [Lanes; 4]) {
+        let mut given = [[0.0; LANES]; 4];
+        self.draw.color.gather(idx, &mut given);
+        let Some(l) = self.lighting.as_ref().filter(|_| light) else {
+            for v in given.iter_mut().flatten() {
+                *v = min_ps(max_ps(*v, 0.0), 1.0);
+            }
+            return (given, given);
+        };
+        // Batched, only lighting reads the normal (texgen is not batched).
+        let mut n = [[0.0; LANES]; 3];
+        self.draw.normal.gather(idx, &mut n);
+        let mut normal = [[0.0; LANES]; 3];
+        let m = self.normal.to_cols_array_2d();
+        for r in 0..3 {
+            for k in 0..LANES {
+                normal[r][k] =
+                    (m[0][r] * n[0][k] + m[1][r] * n[1][k] + m[2][r] * n[2][k]) * self.rescale;
+            }
+        }
+        if self.state.normalize {
+            normalize_lanes(&mut normal);
+        }
+        let front = l.shade_lanes(&normal, &given, false);
+        let back = if self.two_side {
+            for v in normal.iter_mut().flatten() {
+                *v = -*v;
+            }
+            l.shade_lanes(&normal, &given, true)
+        } else {
+            front
+        };
+        (front, back)
+    }
+
+    /// Whether vertex `i` is lit: always, except under [`provoking`](Self::provoking)
+    /// where only the provoking vertices are (the others' colors are never read).
+    #[inline(always)]
+    pub fn lit(&self, i: usize) -> bool {
+        match self.provoking {
+            None => true,
+            Some((first, step)) => i >= first && (i - first) % step == step - 1,
         }
     }
 
@@ -499,6 +547,7 @@ fn clamp01(c: Vec4) -> Vec4 {
 mod tests {
     use super::super::{run, AttribSource, ComponentType, Indices};
     use super::*;
+    use crate::core::clip;
 
     fn draw<'a>(bytes: &'a [u8], prim: Primitive, count: usize) -> DrawCall<'a> {
         DrawCall::new(
@@ -516,6 +565,29 @@ mod tests {
 
     fn bytes(v: &[f32]) -> Vec<u8> {
         v.iter().flat_map(|v| v.to_ne_bytes()).collect()
+    }
+
+    /// [`bits`] of vertex `i` of a draw of `n` vertices from `first` under `stage`, the
+    /// colors left out where deferred lighting leaves them unlit because no pixel reads
+    /// them (the batched path defers; the one-vertex path lights them).
+    fn read_bits(
+        stage: &Stage<'_, '_>,
+        v: &ClipVertex,
+        tri: [&ClipVertex; 3],
+        i: usize,
+        n: usize,
+    ) -> Vec<u32> {
+        let mut v = *v;
+        if let Some(d) = stage.deferred {
+            let k = i - d.first;
+            let whole = k < n / d.step * d.step;
+            let rejected = d.step == 3 && clip::rejects(tri[0], tri[1], tri[2]);
+            if !whole || rejected {
+                v.color = Vec4::ZERO;
+                v.back_color = Vec4::ZERO;
+            }
+        }
+        bits(&v)
     }
 
     /// Every float of a vertex, as bits, for exact comparison (NaN included).
@@ -636,8 +708,257 @@ mod tests {
             for i in 0..n {
                 let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
                 stage.write(i, &mut one);
-                assert_eq!(bits(&v[i]), bits(&one), "case {case}, vertex {i}");
+                let t = |k: usize| &v[(i / 3 * 3 + k).min(n - 1)];
+                let tri = [t(0), t(1), t(2)];
+                assert_eq!(
+                    read_bits(&stage, &v[i], tri, i, n),
+                    read_bits(&stage, &one, tri, i, n),
+                    "case {case}, vertex {i}"
+                );
             }
+        }
+    }
+
+    #[test]
+    fn batched_lanes_match_one_vertex_for_every_array_type_and_stride() {
+        use crate::core::state::{Light, Lighting};
+        // Pseudo-random bytes read as every type: as floats they include NaN, infinities
+        // and subnormals. 21 vertices: two full groups and a short one.
+        let n = 21;
+        let mut x = 0x9e37_79b9_7f4a_7c15_u64;
+        let raw: Vec<u8> = (0..64 * n)
+            .map(|_| {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                (x >> 24) as u8
+            })
+            .collect();
+        use ComponentType::*;
+        // (type, size, stride) per array; stride 0 stands for tightly packed.
+        let layouts: [[(ComponentType, usize, usize); 4]; 8] = [
+            // position, normal, color, texcoord
+            [
+                (Byte, 3, 0),
+                (Byte, 3, 0),
+                (UnsignedByte, 4, 0),
+                (Byte, 2, 0),
+            ],
+            [(Short, 4, 0), (Short, 3, 0), (Fixed, 4, 0), (Short, 3, 0)],
+            [
+                (Fixed, 2, 0),
+                (Fixed, 3, 0),
+                (UnsignedByte, 4, 7),
+                (Fixed, 4, 0),
+            ],
+            [
+                (Float, 2, 20),
+                (Float, 3, 16),
+                (Float, 4, 24),
+                (Float, 2, 12),
+            ],
+            [
+                (Byte, 4, 5),
+                (Short, 3, 9),
+                (UnsignedByte, 4, 13),
+                (Short, 2, 6),
+            ],
+            [(Short, 2, 0), (Byte, 3, 3), (Fixed, 4, 20), (Byte, 4, 0)],
+            [
+                (Fixed, 3, 0),
+                (Fixed, 3, 14),
+                (UnsignedByte, 4, 4),
+                (Fixed, 2, 8),
+            ],
+            [
+                (Float, 3, 12),
+                (Float, 3, 12),
+                (Float, 4, 16),
+                (Float, 3, 0),
+            ],
+        ];
+        for (l, layout) in layouts.iter().enumerate() {
+            let arrays: Vec<AttribArray<'_>> = layout
+                .iter()
+                .enumerate()
+                .map(|(which, &(ty, size, stride))| {
+                    let stride = if stride == 0 {
+                        size * ty.size()
+                    } else {
+                        stride
+                    };
+                    // A different offset per array; in the last layout each array ends one
+                    // byte short, so its last element reads as the default.
+                    let end = if l == 7 {
+                        which * 3 + AttribArray::bytes_needed(ty, size, stride, n) - 1
+                    } else {
+                        raw.len()
+                    };
+                    AttribArray {
+                        data: &raw[which * 3..end],
+                        ty,
+                        size,
+                        stride,
+                        // Colors and normals are normalized, as the GL draws them.
+                        normalized: which == 1 || which == 2,
+                    }
+                })
+                .collect();
+            for case in 0..16u32 {
+                let mut s = RenderState::new(8, 8);
+                if case & 8 != 0 {
+                    // Only the provoking vertices lit, in both paths alike.
+                    s.shade_model = crate::core::state::ShadeModel::Flat;
+                }
+                s.modelview =
+                    Mat4::from_rotation_y(0.7) * Mat4::from_scale(Vec3::new(1.0, 2.0, 0.5));
+                s.projection = Mat4::perspective_rh_gl(0.9, 1.3, 0.5, 20.0);
+                s.normalize = case & 1 != 0;
+                if case & 2 != 0 {
+                    let mut lt = Lighting {
+                        lights: vec![Light {
+                            diffuse: Vec4::new(0.9, 0.7, 0.5, 1.0),
+                            specular: Vec4::ONE,
+                            position: Vec4::new(0.3, 0.5, 1.0, 0.0),
+                            ..Light::default()
+                        }],
+                        color_material: case & 4 != 0,
+                        two_side: true,
+                        ..Lighting::default()
+                    };
+                    lt.front.specular = Vec4::new(0.5, 0.6, 0.7, 1.0);
+                    lt.front.shininess = 12.0;
+                    s.lighting = Some(lt);
+                }
+                if case & 4 != 0 {
+                    s.texture_matrices[0] = Mat4::from_rotation_z(0.3);
+                }
+                let mut d = DrawCall::new(
+                    Primitive::Triangles,
+                    Indices::Range { first: 0, count: n },
+                    arrays[0],
+                );
+                d.normal = AttribSource::Array(arrays[1]);
+                d.color = AttribSource::Array(arrays[2]);
+                d.texcoord[0] = AttribSource::Array(arrays[3]);
+                d.texcoord[1] = AttribSource::Array(arrays[0]);
+                let stage = Stage::new(&s, &d);
+                assert!(stage.batched);
+                let v = run(&s, &d).unwrap();
+                for i in 0..n {
+                    let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
+                    stage.write(i, &mut one);
+                    let t = |k: usize| &v[(i / 3 * 3 + k).min(n - 1)];
+                    let tri = [t(0), t(1), t(2)];
+                    assert_eq!(
+                        read_bits(&stage, &v[i], tri, i, n),
+                        read_bits(&stage, &one, tri, i, n),
+                        "layout {l}, case {case}, vertex {i}"
+                    );
+                    // And the conversion is the scalar fetch's, component by component.
+                    assert_eq!(
+                        one.tex[1].to_array().map(f32::to_bits),
+                        arrays[0].fetch(i).map(f32::to_bits),
+                        "layout {l}, vertex {i}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn flat_shading_lights_only_provoking_vertices_with_the_same_pixels() {
+        use crate::core::state::{Light, Lighting, ShadeModel};
+        use crate::core::{render, ColorFormat, DepthFormat, Target, TargetFormat};
+        // A fan of 60 triangles (or 90 lines) around the center, partly off screen so
+        // some are clipped, with normals that differ per vertex.
+        let mut pos = Vec::new();
+        let mut nrm = Vec::new();
+        for t in 0..60 {
+            let a = t as f32 * 0.11;
+            // Every third triangle entirely right of the view volume, and one with a NaN
+            // vertex: clipping rejects those without looking at their colors.
+            let dx = if t % 3 == 1 { 2.5 } else { 0.0 };
+            for (k, r) in [(0, 0.0f32), (1, 1.3), (2, 1.1)] {
+                let b = a + k as f32 * 0.07;
+                let x = if t == 5 && k == 1 {
+                    f32::NAN
+                } else {
+                    r * b.cos() + dx
+                };
+                pos.extend([x, r * b.sin(), 0.1 * k as f32]);
+                nrm.extend([b.sin(), (3.0 * b).cos(), 1.0 + k as f32]);
+            }
+        }
+        let (pb, nb) = (bytes(&pos), bytes(&nrm));
+        let n = pos.len() / 3;
+        let all: Vec<u16> = (0..n as u16).collect();
+        use ShadeModel::{Flat, Smooth};
+        for (shade, light_w, two_side, prim) in [
+            (Flat, 0.0, false, Primitive::Triangles),
+            (Flat, 0.0, true, Primitive::Triangles),
+            (Flat, 1.0, true, Primitive::Triangles),
+            (Flat, 0.0, false, Primitive::Lines),
+            (Flat, 1.0, false, Primitive::Lines),
+            (Smooth, 0.0, true, Primitive::Triangles),
+        ] {
+            let mut s = RenderState::new(48, 48);
+            s.shade_model = shade;
+            s.normalize = true;
+            let mut lt = Lighting {
+                lights: vec![Light {
+                    diffuse: Vec4::new(0.9, 0.6, 0.3, 1.0),
+                    specular: Vec4::ONE,
+                    position: Vec4::new(0.4, 0.3, 1.0, light_w),
+                    ..Light::default()
+                }],
+                two_side,
+                ..Lighting::default()
+            };
+            lt.front.specular = Vec4::splat(0.5);
+            lt.front.shininess = 10.0;
+            s.lighting = Some(lt);
+            let with_normals = |indices| {
+                let mut d = draw(&pb, prim, n);
+                d.indices = indices;
+                d.normal = AttribSource::Array(AttribArray {
+                    data: &nb,
+                    ty: ComponentType::Float,
+                    size: 3,
+                    stride: 12,
+                    normalized: false,
+                });
+                d
+            };
+            let image = |indices| {
+                let mut t = Target::new(
+                    48,
+                    48,
+                    TargetFormat {
+                        color: ColorFormat::Rgba8888,
+                        depth: Some(DepthFormat::D24),
+                        stencil_bits: 0,
+                    },
+                );
+                render(&s, &with_normals(indices), &mut t).unwrap();
+                t.color().to_vec()
+            };
+            let range = with_normals(Indices::Range { first: 0, count: n });
+            let step = if prim == Primitive::Lines { 2 } else { 3 };
+            let stage = Stage::new(&s, &range);
+            assert_eq!(stage.provoking, (shade == Flat).then_some((0, step)));
+            assert_eq!(stage.deferred.is_some(), light_w == 0.0, "{prim:?}");
+            // Indexed, every vertex is lit: the reference.
+            let lit_all = image(Indices::U16(&all));
+            let provoking_only = image(Indices::Range { first: 0, count: n });
+            let mut colors = lit_all.clone();
+            colors.sort_unstable();
+            colors.dedup();
+            assert!(colors.len() > 10, "{prim:?}: {} colors", colors.len());
+            assert!(
+                lit_all == provoking_only,
+                "{shade:?} {prim:?}, light w {light_w}"
+            );
         }
     }
 
