@@ -367,6 +367,7 @@ GL_API void GL_APIENTRY glWeightPointerOES (GLint size, GLenum ty, GLsizei strid
 
 #ifndef GL_OES_packed_depth_stencil
 #define GL_OES_packed_depth_stencil 1
+/* A renderbuffer of 24-bit depth and 8-bit stencil, attachable to both points (depth-stencil textures need OES_depth_texture, which is not offered). */
 #define GL_DEPTH_STENCIL_OES              0x84F9
 #define GL_UNSIGNED_INT_24_8_OES          0x84FA
 #define GL_DEPTH24_STENCIL8_OES           0x88F0
@@ -383,6 +384,7 @@ GL_API GLbitfield GL_APIENTRY glQueryMatrixxOES (GLfixed *mantissa, GLint *expon
 
 #ifndef GL_OES_required_internalformat
 #define GL_OES_required_internalformat 1
+/* Sized internal formats for glTexImage2D and glCopyTexImage2D, stored at their precision (the RGB8, RGBA8, RGB565, RGBA4 and RGB5_A1 tokens are listed with the extensions that introduced them). */
 #define GL_ALPHA8_OES                     0x803C
 #define GL_LUMINANCE4_ALPHA4_OES          0x8043
 #define GL_LUMINANCE8_ALPHA8_OES          0x8045
@@ -490,6 +492,7 @@ GL_API void GL_APIENTRY glGetTexGenivOES (GLenum coord, GLenum pname, GLint *par
 
 #ifndef GL_OES_texture_npot
 #define GL_OES_texture_npot 1
+/* Textures of any width and height, with mipmaps and every wrap mode. */
 #endif /* GL_OES_texture_npot */
 
 #ifndef GL_OES_vertex_array_object
@@ -590,6 +593,7 @@ GL_API void GL_APIENTRY glGetSyncivAPPLE (GLsync sync, GLenum pname, GLsizei cou
 
 #ifndef GL_APPLE_texture_2D_limited_npot
 #define GL_APPLE_texture_2D_limited_npot 1
+/* Non-power-of-two 2D textures (contained in GL_OES_texture_npot, which is also listed). */
 #endif /* GL_APPLE_texture_2D_limited_npot */
 
 #ifndef GL_APPLE_texture_format_BGRA8888
@@ -642,17 +646,17 @@ GL_API void GL_APIENTRY glDiscardFramebufferEXT (GLenum target, GLsizei num_atta
 
 #ifndef GL_EXT_map_buffer_range
 #define GL_EXT_map_buffer_range 1
+/* Mapping a range of a buffer object with access flags (glMapBufferRangeEXT). */
 #define GL_MAP_READ_BIT_EXT               0x0001
 #define GL_MAP_WRITE_BIT_EXT              0x0002
 #define GL_MAP_INVALIDATE_RANGE_BIT_EXT   0x0004
 #define GL_MAP_INVALIDATE_BUFFER_BIT_EXT  0x0008
 #define GL_MAP_FLUSH_EXPLICIT_BIT_EXT     0x0010
 #define GL_MAP_UNSYNCHRONIZED_BIT_EXT     0x0020
-/* Not provided by libGLES_CM: glMapBufferRangeEXT, glFlushMappedBufferRangeEXT. */
-typedef void *(GL_APIENTRYP PFNGLMAPBUFFERRANGEEXTPROC) (GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
+typedef GLvoid *(GL_APIENTRYP PFNGLMAPBUFFERRANGEEXTPROC) (GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
 typedef void (GL_APIENTRYP PFNGLFLUSHMAPPEDBUFFERRANGEEXTPROC) (GLenum target, GLintptr offset, GLsizeiptr length);
 #ifdef GL_GLEXT_PROTOTYPES
-GL_API void *GL_APIENTRY glMapBufferRangeEXT (GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
+GL_API GLvoid *GL_APIENTRY glMapBufferRangeEXT (GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
 GL_API void GL_APIENTRY glFlushMappedBufferRangeEXT (GLenum target, GLintptr offset, GLsizeiptr length);
 #endif
 #endif /* GL_EXT_map_buffer_range */
@@ -721,6 +725,7 @@ GL_API void GL_APIENTRY glGetnUniformivEXT (GLuint program, GLint location, GLsi
 
 #ifndef GL_EXT_texture_compression_dxt1
 #define GL_EXT_texture_compression_dxt1 1
+/* S3TC DXT1 compressed textures, decoded on upload. */
 #define GL_COMPRESSED_RGB_S3TC_DXT1_EXT   0x83F0
 #define GL_COMPRESSED_RGBA_S3TC_DXT1_EXT  0x83F1
 #endif /* GL_EXT_texture_compression_dxt1 */
@@ -808,6 +813,7 @@ GL_API void GL_APIENTRY glFramebufferTexture2DMultisampleIMG (GLenum target, GLe
 
 #ifndef GL_IMG_texture_compression_pvrtc
 #define GL_IMG_texture_compression_pvrtc 1
+/* PVRTC1 compressed textures at 4 and 2 bits per pixel, decoded on upload. */
 #define GL_COMPRESSED_RGB_PVRTC_4BPPV1_IMG 0x8C00
 #define GL_COMPRESSED_RGB_PVRTC_2BPPV1_IMG 0x8C01
 #define GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG 0x8C02
@@ -983,6 +989,33 @@ GL_API void GL_APIENTRY glEndTilingQCOM (GLbitfield preserveMask);
 #define GL_QCOM_writeonly_rendering 1
 #define GL_WRITEONLY_RENDERING_QCOM       0x8823
 #endif /* GL_QCOM_writeonly_rendering */
+
+#ifndef GL_ANGLE_texture_compression_dxt3
+#define GL_ANGLE_texture_compression_dxt3 1
+/* S3TC DXT3 compressed textures (explicit alpha), decoded on upload. */
+#define GL_COMPRESSED_RGBA_S3TC_DXT3_ANGLE 0x83F2
+#endif /* GL_ANGLE_texture_compression_dxt3 */
+
+#ifndef GL_ANGLE_texture_compression_dxt5
+#define GL_ANGLE_texture_compression_dxt5 1
+/* S3TC DXT5 compressed textures (interpolated alpha), decoded on upload. */
+#define GL_COMPRESSED_RGBA_S3TC_DXT5_ANGLE 0x83F3
+#endif /* GL_ANGLE_texture_compression_dxt5 */
+
+#ifndef GL_EXT_compressed_ETC1_RGB8_sub_texture
+#define GL_EXT_compressed_ETC1_RGB8_sub_texture 1
+/* glCompressedTexSubImage2D for ETC1 images, on 4 × 4 block boundaries. */
+#endif /* GL_EXT_compressed_ETC1_RGB8_sub_texture */
+
+#ifndef GL_EXT_polygon_offset_clamp
+#define GL_EXT_polygon_offset_clamp 1
+/* A bound on the polygon offset's magnitude (glPolygonOffsetClampEXT). */
+#define GL_POLYGON_OFFSET_CLAMP_EXT       0x8E1B
+typedef void (GL_APIENTRYP PFNGLPOLYGONOFFSETCLAMPEXTPROC) (GLfloat factor, GLfloat units, GLfloat clamp);
+#ifdef GL_GLEXT_PROTOTYPES
+GL_API void GL_APIENTRY glPolygonOffsetClampEXT (GLfloat factor, GLfloat units, GLfloat clamp);
+#endif
+#endif /* GL_EXT_polygon_offset_clamp */
 
 #ifdef __cplusplus
 }

@@ -23,17 +23,21 @@ pub enum Kind {
     Bool,
 }
 
-/// Up to 16 values of one kind (a matrix is the largest state value).
+/// The most values a state query answers: `GL_COMPRESSED_TEXTURE_FORMATS`' list (19), then
+/// a matrix (16).
+pub(crate) const MAX_VALUES: usize = 24;
+
+/// Up to [`MAX_VALUES`] values of one kind.
 #[derive(Clone, Copy, Debug)]
 pub struct Value {
     pub kind: Kind,
     pub len: usize,
-    pub data: [f64; 16],
+    pub data: [f64; MAX_VALUES],
 }
 
 impl Value {
     pub(crate) fn new(kind: Kind, values: &[f64]) -> Value {
-        let mut data = [0.0; 16];
+        let mut data = [0.0; MAX_VALUES];
         data[..values.len()].copy_from_slice(values);
         Value {
             kind,

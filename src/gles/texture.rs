@@ -128,6 +128,9 @@ pub const COMPRESSED_FORMATS: [GLenum; 19] = [
     GL_COMPRESSED_RGBA_S3TC_DXT5_ANGLE,
 ];
 
+// The list is one state value: it must fit in a query's answer.
+const _: () = assert!(COMPRESSED_FORMATS.len() <= super::get::MAX_VALUES);
+
 /// `OES_required_internalformat`: a sized internal format's base format, the bits it
 /// keeps per channel ([r, g, b, a]; luminance in r, g and b) and the packed client type
 /// it takes besides `GL_UNSIGNED_BYTE`.
