@@ -281,9 +281,10 @@ static unsigned char snap_before[32768];
       glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, -4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, ubuf)) \
     X(tx7, GL_INVALID_VALUE, NULL, 0, TEX; SNAP;                                         \
       glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, ubuf))  \
-    /* Mesa accepts non-power-of-two sizes (it exposes NPOT support). */                \
+    /* Any size fits (OES_texture_npot) up to the level's largest: MAX >> level. */      \
     X(tx8, GL_INVALID_VALUE, NULL, 1, TEX; SNAP;                                         \
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 3, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, ubuf))  \
+      glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, geti(GL_MAX_TEXTURE_SIZE), 1, 0, GL_RGBA,  \
+                   GL_UNSIGNED_BYTE, NULL))                                              \
     X(tx9, GL_INVALID_VALUE, NULL, 0, TEX; SNAP;                                         \
       glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, geti(GL_MAX_TEXTURE_SIZE) * 2, 1, 0, GL_RGBA, \
                    GL_UNSIGNED_BYTE, NULL))                                              \

@@ -865,10 +865,16 @@ impl Context {
     fn write_level_region(&mut self, face: u8, level: usize, r: [u32; 4], mut texels: Vec<u32>) {
         self.texture_changing();
         self.with_face_texture(face, |t| {
-            if let Some(s) = t.level_tag(face, level).and_then(sized_format) {
+            let tag = t.level_tag(face, level);
+            if let Some(s) = tag.and_then(sized_format) {
                 s.store(&mut texels);
             }
-            t.write_face_region(face, level, r[0], r[1], r[2], r[3], &texels)
+            t.write_face_region(face, level, r[0], r[1], r[2], r[3], &texels);
+            // The write may have copied the level (draws still reading the old one): the
+            // copy keeps the level's format.
+            if let Some(tag) = tag {
+                t.tag_level(face, level, tag);
+            }
         });
     }
 
@@ -1144,6 +1150,11 @@ impl Context {
                 }
             } else {
                 t.write_face_region(up.face, up.level, up.x, up.y, w, h, &image.texels);
+                // The write may have copied the level (draws still reading the old one):
+                // the copy keeps the level's format.
+                if let Some(tag) = tag {
+                    t.tag_level(up.face, up.level, tag);
+                }
             }
         });
     }
