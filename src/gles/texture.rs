@@ -1125,10 +1125,10 @@ impl Context {
     /// decodes `data` and writes it over the level's region (PVRTC: replaces the level,
     /// keeping its tag).
     pub fn compressed_tex_sub_image_2d(&mut self, up: CompressedUpdate, data: Option<&[u8]>) {
-        let Some(data) = data else {
+        let (w, h) = (up.width, up.height);
+        let Some(data) = data.filter(|_| w > 0 && h > 0) else {
             return;
         };
-        let (w, h) = (up.width, up.height);
         let decoded = match up.kind {
             Compressed::Pvrtc(f) => f.decode(w, h, data),
             Compressed::S3tc(f) => f.decode(w, h, data),
@@ -1137,9 +1137,6 @@ impl Context {
         let Some(image) = decoded else {
             return;
         };
-        if w == 0 || h == 0 {
-            return;
-        }
         self.texture_changing();
         self.with_face_texture(up.face, |t| {
             let tag = t.level_tag(up.face, up.level);
