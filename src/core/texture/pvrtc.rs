@@ -300,7 +300,8 @@ mod tests {
         assert_eq!(RGBA4.image_size(1, 1), 32);
         assert_eq!(RGBA4.image_size(64, 16), 512);
         assert_eq!(RGBA2.image_size(16, 8), 32);
-        assert_eq!(RGBA2.image_size(2, 32), 64);
+        // max(2, 16) × 32 pixels at 2 bits each.
+        assert_eq!(RGBA2.image_size(2, 32), 128);
         assert!(RGBA4.decode(8, 8, &[0; 31]).is_none());
         assert!(RGBA4.decode(12, 8, &[0; 48]).is_none());
     }
