@@ -19,7 +19,8 @@ int main(void)
     s = eglQueryString(dpy, EGL_CLIENT_APIS);
     CHECK(s != NULL && strcmp(s, "OpenGL_ES") == 0);
     s = eglQueryString(dpy, EGL_EXTENSIONS);
-    CHECK(s != NULL && strcmp(s, "EGL_KHR_get_all_proc_addresses") == 0);
+    CHECK(s != NULL &&
+          strcmp(s, "EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context") == 0);
     s = eglQueryString(dpy, EGL_VENDOR);
     CHECK(s != NULL && strcmp(s, "gles-cm") == 0);
     /* EGL_EXT_client_extensions: EGL_NO_DISPLAY answers only EGL_EXTENSIONS (the client

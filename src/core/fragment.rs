@@ -75,6 +75,12 @@ pub struct TexStage {
     /// Level of detail per pixel (PERSPECTIVE_CORRECTION_HINT NICEST or DONT_CARE), else
     /// exact every [`PERSPECTIVE_STEP`] pixels and linear in between (FASTEST).
     lod_per_pixel: bool,
+    /// An environment reads another unit's texel (`OES_texture_env_crossbar`): every unit
+    /// is sampled before the first environment, on the general route only.
+    crossbar: bool,
+    /// A unit filters anisotropically (`EXT_texture_filter_anisotropic`): the general
+    /// route only.
+    anisotropic: bool,
 }
 
 impl TexStage {
@@ -88,10 +94,14 @@ impl TexStage {
         if units.is_empty() && state.fog.is_none() {
             return None;
         }
+        let crossbar = units.iter().any(|(_, u)| u.env.reads_other_units());
+        let anisotropic = units.iter().any(|(_, u)| u.sampler.max_anisotropy > 1.0);
         Some(TexStage {
             units,
             fog: state.fog,
             lod_per_pixel: state.perspective != Quality::Fastest,
+            crossbar,
+            anisotropic,
         })
     }
 
@@ -269,6 +279,47 @@ impl TexSpan {
         let vy = (self.ty - t * self.qy) * r * self.h;
         Sampler::lambda((ux * ux + vx * vx).max(uy * uy + vy * vy))
     }
+
+    /// `EXT_texture_filter_anisotropic` at pixel `i` where the coordinates are (s, t), as
+    /// the extension suggests: with P_max and P_min the footprint's long and short axes in
+    /// texels, N = min(⌈P_max / P_min⌉, the sampler's limit) samples at λ = log₂(P_max / N),
+    /// spread evenly along the long axis ((k + 1)/(N + 1) − ½ of it, k < N) and averaged.
+    /// N = 1 is exactly isotropic filtering.
+    fn anisotropic(&self, sm: &Sampler, i: usize, s: f32, t: f32) -> [f32; 4] {
+        let r = if self.affine {
+            1.0
+        } else {
+            1.0 / (self.q0 + self.dq * i as f32)
+        };
+        // Derivatives of (s, t) per pixel in x and in y.
+        let (sx, tx) = ((self.ds - s * self.dq) * r, (self.dt - t * self.dq) * r);
+        let (sy, ty) = ((self.sy - s * self.qy) * r, (self.ty - t * self.qy) * r);
+        let px2 = (sx * self.w).powi(2) + (tx * self.h).powi(2);
+        let py2 = (sy * self.w).powi(2) + (ty * self.h).powi(2);
+        let (major2, minor2, ds, dt) = if px2 >= py2 {
+            (px2, py2, sx, tx)
+        } else {
+            (py2, px2, sy, ty)
+        };
+        let ratio = (major2 / minor2).sqrt().ceil();
+        // NaN (a point footprint) and infinity (a line) are caught by the comparisons.
+        let n = if ratio >= 1.0 {
+            ratio.min(sm.max_anisotropy.floor()) as usize
+        } else {
+            1
+        };
+        let lambda = Sampler::lambda(major2 / (n * n) as f32);
+        if n == 1 {
+            return sm.sample(s, t, lambda);
+        }
+        let mut sum = [0.0; 4];
+        for k in 0..n {
+            let o = (k + 1) as f32 / (n + 1) as f32 - 0.5;
+            let v = sm.sample(s + ds * o, t + dt * o, lambda);
+            sum.iter_mut().zip(v).for_each(|(a, v)| *a += v);
+        }
+        sum.map(|a| a / n as f32)
+    }
 }
 
 /// Texturing and fog along one span.
@@ -357,19 +408,47 @@ impl<'a> SpanTex<'a> {
     fn apply(&mut self, i: usize, primary: [f32; 4]) -> [f32; 4] {
         let mut c = primary;
         let stage = self.stage;
+        if stage.crossbar {
+            return self.apply_crossbar(i, primary);
+        }
         for (n, (_, unit)) in stage.units.iter().enumerate() {
-            if let Some(faces) = &unit.sampler.cube {
-                let texel = self.spans[n].cube(faces, i);
-                c = texenv::apply(&unit.env, unit.sampler.format, texel, c, primary);
-                continue;
-            }
-            let (s, t) = self.spans[n].st(i);
-            let lambda = self.lambda_at(n, i, s, t);
-            let texel = unit.sampler.sample(s, t, lambda);
+            let texel = self.texel(n, i);
             c = texenv::apply(&unit.env, unit.sampler.format, texel, c, primary);
         }
         self.fog(i, &mut c);
         c
+    }
+
+    /// [`SpanTex::apply`] when an environment reads other units: every texel first.
+    #[inline(never)]
+    fn apply_crossbar(&mut self, i: usize, primary: [f32; 4]) -> [f32; 4] {
+        let stage = self.stage;
+        let mut texels = [[0.0; 4]; TEXTURE_UNITS];
+        for (n, (u, _)) in stage.units.iter().enumerate() {
+            texels[*u] = self.texel(n, i);
+        }
+        let mut c = primary;
+        for (u, unit) in &stage.units {
+            let (env, format) = (&unit.env, unit.sampler.format);
+            c = texenv::apply_crossbar(env, format, texels[*u], c, primary, &texels);
+        }
+        self.fog(i, &mut c);
+        c
+    }
+
+    /// The texel of the `n`th enabled unit at pixel `i`.
+    #[inline(always)]
+    fn texel(&mut self, n: usize, i: usize) -> [f32; 4] {
+        let unit = &self.stage.units[n].1;
+        if let Some(faces) = &unit.sampler.cube {
+            return self.spans[n].cube(faces, i);
+        }
+        let (s, t) = self.spans[n].st(i);
+        if self.stage.anisotropic && unit.sampler.max_anisotropy > 1.0 {
+            return self.spans[n].anisotropic(&unit.sampler, i, s, t);
+        }
+        let lambda = self.lambda_at(n, i, s, t);
+        unit.sampler.sample(s, t, lambda)
     }
 }
 
@@ -437,8 +516,12 @@ impl FragmentKey {
         } else if key.alpha.is_some() || key.stencil.is_some() || key.logic_op.is_some() {
             Route::General
         } else if let Some(stage) = &key.tex {
-            // Cube maps run the general routine.
-            if stage.units.iter().all(|(_, u)| u.sampler.cube.is_none()) {
+            // Cube maps, crossbar environments and anisotropic filtering run the general
+            // routine.
+            if !stage.crossbar
+                && !stage.anisotropic
+                && stage.units.iter().all(|(_, u)| u.sampler.cube.is_none())
+            {
                 Route::Textured {
                     filter: stage.filter(),
                     depth: key.depth.is_some(),

@@ -30,6 +30,10 @@ pub enum Source {
     Constant,
     PrimaryColor,
     Previous,
+    /// `GL_TEXTUREn` (`OES_texture_env_crossbar`): the texel of unit `n`, which must be
+    /// enabled with a complete texture (the GL layer makes a unit that names another pass
+    /// its input through otherwise, as the extension says).
+    Unit(u8),
 }
 
 /// `GL_OPERANDn_RGB` / `GL_OPERANDn_ALPHA` (alpha operands use the two alpha forms).
@@ -58,6 +62,37 @@ impl Combine {
     /// Whether the RGB function is DOT3_RGB or DOT3_RGBA (which replace alpha too).
     pub fn is_dot3(&self) -> bool {
         matches!(self.rgb, CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba)
+    }
+
+    /// The units whose texels this combiner names as `Source::Unit`.
+    pub fn crossbar_units(&self) -> impl Iterator<Item = usize> + '_ {
+        self.src_rgb
+            .iter()
+            .chain(&self.src_alpha)
+            .filter_map(|s| match s {
+                Source::Unit(u) => Some(usize::from(*u)),
+                _ => None,
+            })
+    }
+
+    /// Passes the previous color through unchanged: a unit whose combiner names a unit
+    /// that is disabled or incomplete acts as if its texturing were disabled.
+    pub const PASS_THROUGH: Combine = Combine {
+        rgb: CombineFunc::Replace,
+        alpha: CombineFunc::Replace,
+        src_rgb: [Source::Previous; 3],
+        src_alpha: [Source::Previous; 3],
+        operand_rgb: [Operand::SrcColor; 3],
+        operand_alpha: [Operand::SrcAlpha; 3],
+        rgb_scale: 1.0,
+        alpha_scale: 1.0,
+    };
+}
+
+impl TexEnv {
+    /// Whether the environment reads the texel of another unit (`GL_TEXTUREn` sources).
+    pub fn reads_other_units(&self) -> bool {
+        matches!(&self.mode, EnvMode::Combine(k) if k.crossbar_units().next().is_some())
     }
 }
 
@@ -181,6 +216,19 @@ pub fn apply(
     prev: [f32; 4],
     primary: [f32; 4],
 ) -> [f32; 4] {
+    apply_crossbar(env, format, tex, prev, primary, &[])
+}
+
+/// [`apply`] where COMBINE may read other units' texels: `units[n]` is unit `n`'s.
+#[inline]
+pub fn apply_crossbar(
+    env: &TexEnv,
+    format: BaseFormat,
+    tex: [f32; 4],
+    prev: [f32; 4],
+    primary: [f32; 4],
+    units: &[[f32; 4]],
+) -> [f32; 4] {
     use BaseFormat as F;
     let [cf0, cf1, cf2, af] = prev;
     let cf = [cf0, cf1, cf2];
@@ -232,7 +280,7 @@ pub fn apply(
             let a = if has_alpha { af * r#as } else { af };
             [c[0], c[1], c[2], a]
         }
-        EnvMode::Combine(k) => combine(&k, tex, prev, primary, cc),
+        EnvMode::Combine(k) => combine(&k, tex, prev, primary, cc, units),
     }
 }
 
@@ -243,12 +291,14 @@ fn combine(
     prev: [f32; 4],
     primary: [f32; 4],
     constant: [f32; 4],
+    units: &[[f32; 4]],
 ) -> [f32; 4] {
     let src = |s: Source| match s {
         Source::Texture => tex,
         Source::Constant => constant,
         Source::PrimaryColor => primary,
         Source::Previous => prev,
+        Source::Unit(u) => units.get(usize::from(u)).copied().unwrap_or(prev),
     };
     let arg_rgb = |n: usize| -> [f32; 3] {
         let c = src(k.src_rgb[n]);

@@ -402,6 +402,9 @@ pub struct Texture {
     /// `APPLE_texture_max_level`: the deepest level mipmapping uses (as set: initially
     /// 1000; levels past [`MAX_LEVEL`] do not exist anyway).
     pub max_level: u32,
+    /// `EXT_texture_filter_anisotropic`'s `GL_TEXTURE_MAX_ANISOTROPY_EXT` as set (≥ 1);
+    /// samplers use at most [`MAX_ANISOTROPY`].
+    pub max_anisotropy: f32,
     /// Levels 0 ..= [`MAX_LEVEL`]; `None` where none has been specified. Shared with the
     /// [`Sampler`] snapshots of pending draws, so a change copies a level rather than
     /// altering what those draws read.
@@ -440,6 +443,7 @@ impl Texture {
             generate_mipmap: false,
             crop_rect: [0; 4],
             max_level: 1000,
+            max_anisotropy: 1.0,
             levels: vec![None; MAX_LEVEL + 1],
             cube: None,
             level_tags: Vec::new(),
@@ -818,13 +822,15 @@ impl Texture {
             .iter()
             .map(|l| l.clone().expect("complete"))
             .collect();
-        Some(Arc::new(Sampler::new(
+        let mut sampler = Sampler::new(
             levels,
             self.min_filter,
             self.mag_filter,
             self.wrap_s,
             self.wrap_t,
-        )))
+        );
+        sampler.max_anisotropy = self.max_anisotropy.min(MAX_ANISOTROPY);
+        Some(Arc::new(sampler))
     }
 }
 
@@ -856,10 +862,16 @@ pub struct Sampler {
     /// to λ by [`Sampler::sample_255`] and [`Sampler::trilinear`] (the cube faces carry it
     /// too). 0 unless set by [`Sampler::with_lod_bias`].
     pub lod_bias: f32,
+    /// `EXT_texture_filter_anisotropic`: how many samples minification may take along the
+    /// footprint's long axis, 1 to [`MAX_ANISOTROPY`] (1: isotropic, the default).
+    pub max_anisotropy: f32,
 }
 
 /// `GL_MAX_TEXTURE_LOD_BIAS_EXT`: the largest magnitude of a level-of-detail bias.
 pub const MAX_LOD_BIAS: f32 = 16.0;
+
+/// `GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT`.
+pub const MAX_ANISOTROPY: f32 = 16.0;
 
 impl PartialEq for Sampler {
     /// The same images (by identity) and parameters.
@@ -872,6 +884,7 @@ impl PartialEq for Sampler {
                 .all(|(a, b)| Arc::ptr_eq(a, b))
             && (self.min, self.mag, self.wrap_s, self.wrap_t) == (o.min, o.mag, o.wrap_s, o.wrap_t)
             && self.lod_bias.to_bits() == o.lod_bias.to_bits()
+            && self.max_anisotropy.to_bits() == o.max_anisotropy.to_bits()
             && match (&self.cube, &o.cube) {
                 (None, None) => true,
                 (Some(a), Some(b)) => Arc::ptr_eq(a, b) || a[..] == b[..],
@@ -956,6 +969,7 @@ impl Sampler {
             c,
             cube: None,
             lod_bias: 0.0,
+            max_anisotropy: 1.0,
         }
     }
 

@@ -53,8 +53,8 @@ pub fn after_finish() {
     };
     // glFinish has no error to report a failure with; a panic here must not reach C.
     let _ = crate::boundary::catch(|| {
-        if let Some(cur) = thread::current() {
-            capture(s, &cur.draw);
+        if let Some(d) = thread::current().and_then(|c| c.draw) {
+            capture(s, &d);
         }
     });
 }

@@ -31,7 +31,7 @@ pub const VENDOR: &CStr = c"gles-cm";
 pub const VERSION: &CStr = c"1.4 gles-cm 0.1.0";
 pub const CLIENT_APIS: &CStr = c"OpenGL_ES";
 /// Only what is implemented: eglGetProcAddress answers for every function.
-pub const EXTENSIONS: &CStr = c"EGL_KHR_get_all_proc_addresses";
+pub const EXTENSIONS: &CStr = c"EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context";
 
 /// The client extensions (EGL_EXT_client_extensions): what eglQueryString answers for
 /// EGL_NO_DISPLAY, before any display exists.
@@ -104,7 +104,7 @@ impl Egl {
     }
 
     fn unbind(&mut self, c: &Current) {
-        for id in [c.ctx.id, c.draw.id, c.read.id] {
+        for id in c.ids() {
             self.current_on.remove(&id);
         }
         self.draw_kind.remove(&c.ctx.id);
@@ -378,23 +378,25 @@ pub fn make_current(dpy: usize, draw: usize, read: usize, ctx: usize) -> EglResu
     };
     let new = match (c, d, r) {
         (None, None, None) => None,
-        (Some(c), Some(d), Some(r)) => Some(Current {
+        // Both surfaces, or neither (EGL_KHR_surfaceless_context: our GL contexts support
+        // OES_surfaceless_context).
+        (Some(c), d, r) if d.is_some() == r.is_some() => Some(Current {
             ctx: c,
             draw: d,
             read: r,
         }),
-        // A context needs both surfaces (no surfaceless contexts), and surfaces need a
-        // context.
+        // Surfaces need a context.
         _ => return Err(EGL_BAD_MATCH),
     };
     let me = thread::id();
     if let Some(n) = &new {
-        for id in [n.ctx.id, n.draw.id, n.read.id] {
+        for id in n.ids() {
             if g.current_on.get(&id).is_some_and(|t| *t != me) {
                 return Err(EGL_BAD_ACCESS);
             }
         }
-        if n.draw.config.id != n.ctx.config.id || n.read.config.id != n.ctx.config.id {
+        let config = n.ctx.config.id;
+        if n.draw.iter().chain(&n.read).any(|s| s.config.id != config) {
             return Err(EGL_BAD_MATCH);
         }
     }
@@ -412,13 +414,18 @@ pub fn make_current(dpy: usize, draw: usize, read: usize, ctx: usize) -> EglResu
     }
     match &new {
         Some(n) => {
-            for id in [n.ctx.id, n.draw.id, n.read.id] {
+            for id in n.ids() {
                 g.current_on.insert(id, me);
             }
-            g.draw_kind.insert(n.ctx.id, n.draw.kind);
-            let draw: Arc<dyn crate::gles::Surface> = n.draw.clone();
-            let read: Arc<dyn crate::gles::Surface> = n.read.clone();
-            gl_current::lock(&n.ctx.gl).make_current(Some(draw), Some(read));
+            if let Some(d) = &n.draw {
+                g.draw_kind.insert(n.ctx.id, d.kind);
+            }
+            let gl_surface = |s: &Arc<Surface>| -> Arc<dyn crate::gles::Surface> { s.clone() };
+            let (draw, read) = (
+                n.draw.as_ref().map(gl_surface),
+                n.read.as_ref().map(gl_surface),
+            );
+            gl_current::lock(&n.ctx.gl).make_current(draw, read);
             gl_current::set(Some(n.ctx.gl.clone()));
         }
         None => {
@@ -450,8 +457,8 @@ pub fn current_display() -> usize {
 pub fn current_surface(which: EGLint) -> EglResult<usize> {
     let cur = thread::current();
     match which {
-        EGL_DRAW => Ok(cur.map_or(0, |c| c.draw.id)),
-        EGL_READ => Ok(cur.map_or(0, |c| c.read.id)),
+        EGL_DRAW => Ok(cur.and_then(|c| c.draw).map_or(0, |s| s.id)),
+        EGL_READ => Ok(cur.and_then(|c| c.read).map_or(0, |s| s.id)),
         _ => Err(EGL_BAD_PARAMETER),
     }
 }
@@ -465,7 +472,7 @@ pub fn swap_buffers(dpy: usize, s: usize) -> EglResult<()> {
     let surf = g.surface(s)?;
     drop(g);
     let cur = thread::current()
-        .filter(|c| c.draw.id == s)
+        .filter(|c| c.draws_to(s))
         .ok_or(EGL_BAD_SURFACE)?;
     if surf.kind == Kind::Window {
         cur.ctx.finish();
@@ -489,7 +496,7 @@ pub fn copy_buffers(dpy: usize, s: usize, pixmap: Option<Box<dyn NativeMemory>>)
     let pixmap = pixmap
         .filter(|p| p.layout().is_valid())
         .ok_or(EGL_BAD_NATIVE_PIXMAP)?;
-    if let Some(cur) = thread::current().filter(|c| c.draw.id == s) {
+    if let Some(cur) = thread::current().filter(|c| c.draws_to(s)) {
         cur.ctx.finish();
     }
     surf.copy_to(pixmap.as_ref())
@@ -500,11 +507,10 @@ pub fn swap_interval(dpy: usize, interval: EGLint) -> EglResult<()> {
     let g = egl();
     g.check(dpy)?;
     let cur = thread::current().ok_or(EGL_BAD_CONTEXT)?;
-    if !g.surfaces.contains_key(&cur.draw.id) {
-        return Err(EGL_BAD_SURFACE);
-    }
+    let draw = cur.draw.filter(|d| g.surfaces.contains_key(&d.id));
+    let draw = draw.ok_or(EGL_BAD_SURFACE)?;
     let v = interval.clamp(MIN_SWAP_INTERVAL, MAX_SWAP_INTERVAL);
-    cur.draw.update_state(|s| s.swap_interval = v);
+    draw.update_state(|s| s.swap_interval = v);
     Ok(())
 }
 
@@ -537,7 +543,7 @@ pub fn bind_tex_image_egl(dpy: usize, s: usize, buffer: EGLint) -> EglResult<()>
         return Ok(());
     };
     // Rendering to the pbuffer issued so far must be visible in the texture.
-    if cur.draw.id == s || cur.read.id == s {
+    if cur.uses(s) {
         cur.ctx.finish();
     }
     if !bind_tex_image(&cur.ctx, &surf) {
@@ -590,13 +596,20 @@ pub fn wait_native(engine: EGLint) -> EglResult<()> {
     };
     check_current_surfaces(&cur)?;
     cur.ctx.flush();
-    cur.draw.reload_native();
+    if let Some(d) = &cur.draw {
+        d.reload_native();
+    }
     Ok(())
 }
 
 fn check_current_surfaces(cur: &Current) -> EglResult<()> {
     let g = egl();
-    if !g.surfaces.contains_key(&cur.draw.id) || !g.surfaces.contains_key(&cur.read.id) {
+    if cur
+        .draw
+        .iter()
+        .chain(&cur.read)
+        .any(|s| !g.surfaces.contains_key(&s.id))
+    {
         return Err(EGL_BAD_CURRENT_SURFACE);
     }
     Ok(())

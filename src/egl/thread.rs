@@ -10,12 +10,30 @@ use super::surface::Surface;
 use super::tokens::*;
 use super::types::{EGLenum, EGLint};
 
-/// A thread's current context and surfaces (there is no surfaceless binding).
+/// A thread's current context and surfaces: both surfaces, or neither
+/// (`EGL_KHR_surfaceless_context`).
 #[derive(Clone)]
 pub struct Current {
     pub ctx: Arc<Context>,
-    pub draw: Arc<Surface>,
-    pub read: Arc<Surface>,
+    pub draw: Option<Arc<Surface>>,
+    pub read: Option<Arc<Surface>>,
+}
+
+impl Current {
+    /// The handles of the context and its surfaces.
+    pub fn ids(&self) -> impl Iterator<Item = usize> + '_ {
+        std::iter::once(self.ctx.id).chain(self.draw.iter().chain(&self.read).map(|s| s.id))
+    }
+
+    /// Whether surface `s` is the draw surface.
+    pub fn draws_to(&self, s: usize) -> bool {
+        self.draw.as_ref().is_some_and(|d| d.id == s)
+    }
+
+    /// Whether surface `s` is the draw or the read surface.
+    pub fn uses(&self, s: usize) -> bool {
+        self.draws_to(s) || self.read.as_ref().is_some_and(|r| r.id == s)
+    }
 }
 
 struct ThreadState {

@@ -458,11 +458,18 @@ impl Context {
             .map(|l| l.format)
     }
 
-    /// Called before a draw, clear or read: with a framebuffer object bound, checks it is
-    /// complete (else `GL_INVALID_FRAMEBUFFER_OPERATION_OES` and false) and makes its target
+    /// Called before a draw, clear or read: checks the bound framebuffer (object, or the
+    /// default one, which a surfaceless context lacks) is complete (else
+    /// `GL_INVALID_FRAMEBUFFER_OPERATION_OES` and false) and makes a framebuffer object's target
     /// current, reloading it when its attachments changed since it was assembled.
     pub(super) fn framebuffer_ready(&mut self) -> bool {
         if self.fbo.bound == 0 {
+            // OES_surfaceless_context: current without surfaces, the default framebuffer
+            // does not exist, so it is never complete.
+            if self.draw.is_none() {
+                self.set_error(GL_INVALID_FRAMEBUFFER_OPERATION_OES);
+                return false;
+            }
             return true;
         }
         let fb = self
@@ -860,7 +867,11 @@ impl Context {
             return 0;
         }
         if self.fbo.bound == 0 {
-            return GL_FRAMEBUFFER_COMPLETE_OES;
+            return if self.draw.is_some() {
+                GL_FRAMEBUFFER_COMPLETE_OES
+            } else {
+                GL_FRAMEBUFFER_UNDEFINED_OES
+            };
         }
         let fb = self
             .fbo

@@ -158,6 +158,9 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_EXT_polygon_offset_clamp",
     "GL_OES_required_internalformat",
     "GL_OES_packed_depth_stencil",
+    "GL_OES_texture_env_crossbar",
+    "GL_EXT_texture_filter_anisotropic",
+    "GL_OES_surfaceless_context",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
@@ -299,6 +302,9 @@ impl Context {
             GL_SUBPIXEL_BITS => Value::int(SUBPIXEL_BITS as i64),
             super::tokens_ext::GL_MAX_TEXTURE_LOD_BIAS_EXT => {
                 Value::floats(&[crate::core::texture::MAX_LOD_BIAS])
+            }
+            super::tokens_ext::GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT => {
+                Value::floats(&[crate::core::texture::MAX_ANISOTROPY])
             }
             // Every config is single-sample.
             GL_SAMPLE_BUFFERS | GL_SAMPLES => Value::int(0),

@@ -185,6 +185,7 @@ impl Context {
             ),
             Slot::SrcRgb(_) | Slot::SrcAlpha(_) => {
                 matches!(e, GL_TEXTURE | GL_CONSTANT | GL_PRIMARY_COLOR | GL_PREVIOUS)
+                    || crossbar_unit(e).is_some()
             }
             Slot::OperandRgb(_) => matches!(
                 e,
@@ -257,13 +258,25 @@ fn combine_func(e: GLenum) -> core_env::CombineFunc {
     }
 }
 
-fn source(e: GLenum) -> core_env::Source {
+/// The unit `GL_TEXTUREn` names as a combiner source (`OES_texture_env_crossbar`).
+fn crossbar_unit(e: GLenum) -> Option<usize> {
+    let n = e.checked_sub(GL_TEXTURE0)? as usize;
+    (n < MAX_TEXTURE_UNITS).then_some(n)
+}
+
+/// The core's source for `e` on unit `own`; `GL_TEXTUREn` naming the unit itself is its
+/// own texel, which keeps the draw off the crossbar route.
+fn source(e: GLenum, own: usize) -> core_env::Source {
     use core_env::Source as S;
     match e {
         GL_TEXTURE => S::Texture,
         GL_CONSTANT => S::Constant,
         GL_PRIMARY_COLOR => S::PrimaryColor,
-        _ => S::Previous,
+        _ => match crossbar_unit(e) {
+            Some(n) if n == own => S::Texture,
+            Some(n) => S::Unit(n as u8),
+            None => S::Previous,
+        },
     }
 }
 
@@ -278,8 +291,9 @@ fn operand(e: GLenum) -> core_env::Operand {
 }
 
 impl TexEnvUnit {
-    /// The core's form of this environment (the enums were validated when set).
-    pub fn to_core(&self) -> core_env::TexEnv {
+    /// The core's form of this environment of unit `own` (the enums were validated when
+    /// set).
+    pub fn to_core(&self, own: usize) -> core_env::TexEnv {
         use core_env::EnvMode as M;
         let mode = match self.mode {
             GL_REPLACE => M::Replace,
@@ -289,8 +303,8 @@ impl TexEnvUnit {
             GL_COMBINE => M::Combine(core_env::Combine {
                 rgb: combine_func(self.combine_rgb),
                 alpha: combine_func(self.combine_alpha),
-                src_rgb: self.src_rgb.map(source),
-                src_alpha: self.src_alpha.map(source),
+                src_rgb: self.src_rgb.map(|e| source(e, own)),
+                src_alpha: self.src_alpha.map(|e| source(e, own)),
                 operand_rgb: self.operand_rgb.map(operand),
                 operand_alpha: self.operand_alpha.map(operand),
                 rgb_scale: self.rgb_scale,
@@ -329,12 +343,22 @@ impl Context {
             rs.textures[u] = if let Some(sampler) = sampler {
                 sampler.map(|sampler| core_env::TextureUnit {
                     sampler,
-                    env: self.texenv.units[u].to_core(),
+                    env: self.texenv.units[u].to_core(u),
                     coord_replace: self.texenv.units[u].coord_replace,
                 })
             } else {
                 None
             };
+        }
+        // OES_texture_env_crossbar: a unit whose combiner names a unit that is disabled or
+        // has no complete texture acts as if its texturing were disabled.
+        let live: [bool; MAX_TEXTURE_UNITS] = std::array::from_fn(|u| rs.textures[u].is_some());
+        for unit in rs.textures.iter_mut().flatten() {
+            if let core_env::EnvMode::Combine(k) = &unit.env.mode {
+                if k.crossbar_units().any(|n| !live[n]) {
+                    unit.env.mode = core_env::EnvMode::Combine(core_env::Combine::PASS_THROUGH);
+                }
+            }
         }
         rs.point_sprite = self.enables.point_sprite;
         rs.fog = self.enables.fog.then(|| {

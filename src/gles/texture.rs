@@ -585,6 +585,7 @@ impl Context {
             WrapT(Wrap),
             Generate(bool),
             MaxLevel(u32),
+            MaxAnisotropy(f32),
         }
         let wrap = |e| match e {
             GL_REPEAT => Some(Wrap::Repeat),
@@ -621,6 +622,18 @@ impl Context {
                 }
                 Some(Set::MaxLevel(v.min(u32::MAX as f64) as u32))
             }
+            // EXT_texture_filter_anisotropic: any value of at least 1 (kept as set; the
+            // sampler uses at most GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT).
+            GL_TEXTURE_MAX_ANISOTROPY_EXT => {
+                let a = match kind {
+                    ParamKind::Fixed => fixed::to_f32(v as i32) as f64,
+                    _ => v,
+                };
+                if a.is_nan() || a < 1.0 {
+                    return self.set_error(GL_INVALID_VALUE);
+                }
+                Some(Set::MaxAnisotropy(a.min(f32::MAX as f64) as f32))
+            }
             _ => None,
         };
         let Some(set) = set else {
@@ -635,6 +648,7 @@ impl Context {
                 Set::WrapT(w) => t.wrap_t = w,
                 Set::Generate(g) => t.generate_mipmap = g,
                 Set::MaxLevel(l) => t.max_level = l,
+                Set::MaxAnisotropy(a) => t.max_anisotropy = a,
             }
             t.touch();
         })
@@ -681,6 +695,11 @@ impl Context {
                 }
                 GL_GENERATE_MIPMAP => e(GLenum::from(t.generate_mipmap)),
                 GL_TEXTURE_MAX_LEVEL_APPLE => Some(vec![t.max_level as f64]),
+                GL_TEXTURE_MAX_ANISOTROPY_EXT => Some(vec![match kind {
+                    ParamKind::Fixed => fixed::from_f32(t.max_anisotropy) as f64,
+                    ParamKind::Int => (t.max_anisotropy as f64).round(),
+                    _ => t.max_anisotropy as f64,
+                }]),
                 GL_TEXTURE_CROP_RECT_OES => Some(
                     t.crop_rect
                         .iter()

@@ -247,3 +247,7 @@ pub const GL_LUMINANCE8_ALPHA8_OES: GLenum = 0x8045;
 pub const GL_DEPTH_STENCIL_OES: GLenum = 0x84F9;
 pub const GL_UNSIGNED_INT_24_8_OES: GLenum = 0x84FA;
 pub const GL_DEPTH24_STENCIL8_OES: GLenum = 0x88F0;
+
+// Extension: GL_OES_surfaceless_context
+// A context current without surfaces (EGL_KHR_surfaceless_context): its default framebuffer does not exist.
+pub const GL_FRAMEBUFFER_UNDEFINED_OES: GLenum = 0x8219;

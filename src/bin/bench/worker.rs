@@ -270,6 +270,7 @@ fn source(s: Source) -> GLenum {
         Source::Constant => GL_CONSTANT,
         Source::PrimaryColor => GL_PRIMARY_COLOR,
         Source::Previous => GL_PREVIOUS,
+        Source::Unit(n) => GL_TEXTURE0 + GLenum::from(n),
     }
 }
 

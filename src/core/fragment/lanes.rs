@@ -1187,6 +1187,8 @@ fn combine_lanes(
         Source::Constant => &constant,
         Source::PrimaryColor => primary,
         Source::Previous => prev,
+        // Crossbar environments take the general route (`FragmentKey::new`).
+        Source::Unit(_) => unreachable!("crossbar environment on the 8-wide route"),
     };
     // Argument `n` of channel `ch` (3: alpha), as `texenv::combine`'s arguments give it.
     let arg = |n: usize, ch: usize| -> Lane<f32> {

@@ -152,11 +152,42 @@ fn linear(sm: &Sampler, img: &Image, s: f64, t: f64) -> DVec4 {
 /// The filtered value of `sm` at `c` (ES 1.1 §3.7.7-3.7.8), in [0, 1].
 pub fn sample(sm: &Sampler, c: &Coords) -> DVec4 {
     let (w, h) = (sm.levels[0].width as f64, sm.levels[0].height as f64);
-    let rho = ((c.ds_dx * w).powi(2) + (c.dt_dx * h).powi(2))
-        .sqrt()
-        .max(((c.ds_dy * w).powi(2) + (c.dt_dy * h).powi(2)).sqrt());
+    let px = ((c.ds_dx * w).powi(2) + (c.dt_dx * h).powi(2)).sqrt();
+    let py = ((c.ds_dy * w).powi(2) + (c.dt_dy * h).powi(2)).sqrt();
+    if sm.max_anisotropy > 1.0 && sm.cube.is_none() {
+        // EXT_texture_filter_anisotropic's suggested filter: N samples along the long axis
+        // of the footprint, each with the level of detail of P_max / N.
+        let (major, minor, ds, dt) = if px >= py {
+            (px, py, c.ds_dx, c.dt_dx)
+        } else {
+            (py, px, c.ds_dy, c.dt_dy)
+        };
+        let ratio = (major / minor).ceil();
+        let n = if ratio >= 1.0 {
+            ratio.min(sm.max_anisotropy.floor() as f64)
+        } else {
+            1.0
+        };
+        let sum: DVec4 = (1..=n as usize)
+            .map(|k| {
+                let o = k as f64 / (n + 1.0) - 0.5;
+                let at = Coords {
+                    s: c.s + ds * o,
+                    t: c.t + dt * o,
+                    ..*c
+                };
+                sample_lod(sm, &at, (major / n).log2())
+            })
+            .sum();
+        return sum / n;
+    }
+    sample_lod(sm, c, px.max(py).log2())
+}
+
+/// [`sample`] at level of detail `lambda` before the bias.
+fn sample_lod(sm: &Sampler, c: &Coords, lambda: f64) -> DVec4 {
     // EXT_texture_lod_bias: the unit's bias (clamped when it was set) before everything.
-    let lambda = rho.log2() + sm.lod_bias as f64;
+    let lambda = lambda + sm.lod_bias as f64;
     let cswitch = if sm.mag == MagFilter::Linear
         && matches!(
             sm.min,
@@ -206,8 +237,16 @@ fn clamp01(v: DVec4) -> DVec4 {
 }
 
 /// Table 3.15-3.18 of ES 1.1: the environment `env` for texel `cs` of `format`, applied
-/// to the previous color `cf`; `cp` is the primary color.
-pub fn env(env: &TexEnv, format: BaseFormat, cs: DVec4, cf: DVec4, cp: DVec4) -> DVec4 {
+/// to the previous color `cf`; `cp` is the primary color, `units[n]` unit `n`'s texel
+/// (`OES_texture_env_crossbar`).
+pub fn env(
+    env: &TexEnv,
+    format: BaseFormat,
+    cs: DVec4,
+    cf: DVec4,
+    cp: DVec4,
+    units: &[Option<DVec4>],
+) -> DVec4 {
     let cc = DVec4::from_array(env.color.map(f64::from));
     let rgb = |v: DVec4| v.truncate();
     let out = |c: glam::DVec3, a: f64| clamp01(c.extend(a));
@@ -246,6 +285,7 @@ pub fn env(env: &TexEnv, format: BaseFormat, cs: DVec4, cf: DVec4, cp: DVec4) ->
                 Source::Constant => cc,
                 Source::PrimaryColor => cp,
                 Source::Previous => cf,
+                Source::Unit(u) => units.get(usize::from(u)).copied().flatten().unwrap_or(cf),
             };
             let arg = |n: usize| {
                 let c = src(k.src_rgb[n]);
@@ -298,16 +338,26 @@ pub fn env(env: &TexEnv, format: BaseFormat, cs: DVec4, cf: DVec4, cp: DVec4) ->
 
 /// Every enabled unit in order, then fog at eye distance `z_eye` (|z| of eye space).
 pub fn shade(state: &RenderState, primary: DVec4, coords: &[Option<Coords>], z_eye: f64) -> DVec4 {
+    // Every texel first: a crossbar environment reads later units' texels too.
+    let texels: Vec<Option<DVec4>> = state
+        .textures
+        .iter()
+        .enumerate()
+        .map(|(u, unit)| {
+            let (Some(unit), Some(Some(co))) = (unit, coords.get(u)) else {
+                return None;
+            };
+            Some(match (co.face, &unit.sampler.cube) {
+                (Some(f), Some(faces)) => sample(&faces[f], co),
+                _ => sample(&unit.sampler, co),
+            })
+        })
+        .collect();
     let mut c = primary;
-    for (u, unit) in state.textures.iter().enumerate() {
-        let (Some(unit), Some(Some(co))) = (unit, coords.get(u)) else {
-            continue;
-        };
-        let cs = match (co.face, &unit.sampler.cube) {
-            (Some(f), Some(faces)) => sample(&faces[f], co),
-            _ => sample(&unit.sampler, co),
-        };
-        c = env(&unit.env, unit.sampler.format, cs, c, primary);
+    for (unit, cs) in state.textures.iter().zip(&texels) {
+        if let (Some(unit), Some(cs)) = (unit, cs) {
+            c = env(&unit.env, unit.sampler.format, *cs, c, primary, &texels);
+        }
     }
     if let Some(fog) = &state.fog {
         let z = z_eye.abs();
