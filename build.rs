@@ -41,6 +41,13 @@ const BLESS_VAR: &str = "GLES_CM_BLESS_HEADERS";
 /// declared in the block of its extension: in `gl.h` when `tokens.rs` has that extension's
 /// section (the four extensions of the core header), in `glext.h` otherwise.
 const GL_EXTENSION_FUNCTIONS: &[(&str, &[&str])] = &[
+    (
+        "GL_OES_EGL_image",
+        &[
+            "glEGLImageTargetTexture2DOES",
+            "glEGLImageTargetRenderbufferStorageOES",
+        ],
+    ),
     ("GL_OES_point_size_array", &["glPointSizePointerOES"]),
     (
         "GL_OES_blend_equation_separate",
@@ -189,7 +196,7 @@ const GL_EXTENSION_FUNCTIONS: &[(&str, &[&str])] = &[
     ),
 ];
 
-/// EGL 1.4 functions by the version that introduced them.
+/// EGL 1.5 functions by the version that introduced them.
 const EGL_VERSION_FUNCTIONS: &[(&str, &[&str])] = &[
     (
         "EGL_VERSION_1_0",
@@ -241,10 +248,26 @@ const EGL_VERSION_FUNCTIONS: &[(&str, &[&str])] = &[
     ),
     ("EGL_VERSION_1_3", &[]),
     ("EGL_VERSION_1_4", &["eglGetCurrentContext"]),
+    (
+        "EGL_VERSION_1_5",
+        &[
+            "eglCreateSync",
+            "eglDestroySync",
+            "eglClientWaitSync",
+            "eglGetSyncAttrib",
+            "eglCreateImage",
+            "eglDestroyImage",
+            "eglGetPlatformDisplay",
+            "eglCreatePlatformWindowSurface",
+            "eglCreatePlatformPixmapSurface",
+            "eglWaitSync",
+        ],
+    ),
 ];
 
 /// A few EGL extension functions, by extension (for `eglext.h`'s blocks).
 const EGL_EXTENSION_FUNCTIONS: &[(&str, &[&str])] = &[
+    ("EGL_KHR_wait_sync", &["eglWaitSyncKHR"]),
     (
         "EGL_KHR_image_base",
         &["eglCreateImageKHR", "eglDestroyImageKHR"],
@@ -286,6 +309,13 @@ const EGL_VERSION_TYPES: &[(&str, &str)] = &[
     (
         "EGL_VERSION_1_2",
         "typedef unsigned int EGLenum;\ntypedef void *EGLClientBuffer;\n",
+    ),
+    (
+        "EGL_VERSION_1_5",
+        "typedef void *EGLSync;\n\
+         typedef khronos_intptr_t EGLAttrib;\n\
+         typedef khronos_utime_nanoseconds_t EGLTime;\n\
+         typedef void *EGLImage;\n",
     ),
 ];
 
@@ -902,7 +932,7 @@ impl Generator {
         ext: &mut BTreeMap<String, Function>,
     ) -> String {
         let mut h = String::new();
-        h += &preamble("EGL/egl.h", "EGL 1.4");
+        h += &preamble("EGL/egl.h", "EGL 1.5");
         h += "#ifndef __egl_h_\n#define __egl_h_ 1\n\n";
         h += "#include <EGL/eglplatform.h>\n\n";
         h += CPP_OPEN;
@@ -936,7 +966,7 @@ impl Generator {
             );
             h += &format!("#endif /* {name} */\n\n");
         }
-        // Anything else in ffi.rs is not EGL 1.4: it goes to eglext.h.
+        // Anything else in ffi.rs is not core EGL: it goes to eglext.h.
         ext.append(&mut core);
         h += CPP_CLOSE;
         h += "#endif /* __egl_h_ */\n";
@@ -967,7 +997,7 @@ impl Generator {
             ext,
             ("EGLAPI", "EGLAPIENTRY", "EGLAPIENTRYP"),
             "EGL_EGLEXT_PROTOTYPES",
-            "is neither EGL 1.4 nor listed under an EGL extension in build.rs",
+            "is neither core EGL nor listed under an EGL extension in build.rs",
         );
         h += CPP_CLOSE;
         h += "#endif /* __eglext_h_ */\n";
@@ -1360,6 +1390,8 @@ fn c_value(t: &Token) -> Option<String> {
         return None;
     }
     Some(match (neg, is_egl) {
+        // EGLTime values are 64-bit (EGL_FOREVER), spelt as the standard header does.
+        (false, _) if t.ty == "EGLTime" => format!("{mag}ull"),
         (false, _) => mag.to_string(),
         (true, true) => format!("EGL_CAST({},-{mag})", t.ty),
         (true, false) => format!("(-{mag})"),

@@ -15,12 +15,13 @@ int main(void)
     CHECK(eglGetDisplay((EGLNativeDisplayType)(size_t)1234) == dpy);
     CHECK(eglInitialize(dpy, NULL, NULL));
     s = eglQueryString(dpy, EGL_VERSION);
-    CHECK(s != NULL && strncmp(s, "1.4 gles-cm", 11) == 0);
+    CHECK(s != NULL && strncmp(s, "1.5 gles-cm", 11) == 0);
     s = eglQueryString(dpy, EGL_CLIENT_APIS);
     CHECK(s != NULL && strcmp(s, "OpenGL_ES") == 0);
     s = eglQueryString(dpy, EGL_EXTENSIONS);
-    CHECK(s != NULL &&
-          strcmp(s, "EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context") == 0);
+    CHECK(s != NULL && strcmp(s, "EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context "
+                                 "EGL_KHR_create_context EGL_KHR_fence_sync EGL_KHR_wait_sync "
+                                 "EGL_KHR_image_base EGL_KHR_gl_texture_2D_image") == 0);
     s = eglQueryString(dpy, EGL_VENDOR);
     CHECK(s != NULL && strcmp(s, "gles-cm") == 0);
     /* EGL_EXT_client_extensions: EGL_NO_DISPLAY answers only EGL_EXTENSIONS (the client

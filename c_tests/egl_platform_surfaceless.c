@@ -64,7 +64,7 @@ int main(void)
     dpy = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
     CHECK(dpy != EGL_NO_DISPLAY);
     CHECK_EGL(EGL_SUCCESS);
-    CHECK(eglInitialize(dpy, &major, &minor) && major == 1 && minor == 4);
+    CHECK(eglInitialize(dpy, &major, &minor) && major == 1 && minor == 5);
     /* The display's own string lists display extensions only. */
     CHECK(!has_word(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_EXT_platform_base"));
     CHECK(eglChooseConfig(dpy, config_attribs, &config, 1, &n) && n == 1);
@@ -97,6 +97,30 @@ int main(void)
     CHECK(eglCreatePlatformPixmapSurfaceEXT(EGL_NO_DISPLAY, config, &pix, NULL) ==
           EGL_NO_SURFACE);
     CHECK_EGL(EGL_BAD_DISPLAY);
+
+    /* EGL 1.5's core forms take EGLAttrib lists. */
+    {
+        static const EGLAttrib bad[] = {0x3333, 1, EGL_NONE};
+        static uint32_t more_pixels[8 * 8];
+        struct EGLMemoryPixmap more = {8, 8, 8 * 4, EGL_MEMORY_RGBA8888, more_pixels};
+        static const EGLAttrib wide_big[] = {EGL_RENDER_BUFFER, (EGLAttrib)1 << 40, EGL_NONE};
+        EGLSurface s;
+        CHECK(eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL) ==
+              dpy);
+        CHECK(eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, bad) ==
+              EGL_NO_DISPLAY);
+        CHECK_EGL(EGL_BAD_ATTRIBUTE);
+        CHECK(eglGetPlatformDisplay(0x1234, EGL_DEFAULT_DISPLAY, NULL) == EGL_NO_DISPLAY);
+        CHECK_EGL(EGL_BAD_PARAMETER);
+        s = eglCreatePlatformPixmapSurface(dpy, config, &more, NULL);
+        CHECK(s != EGL_NO_SURFACE);
+        CHECK(eglDestroySurface(dpy, s));
+        CHECK(eglCreatePlatformWindowSurface(dpy, config, NULL, NULL) == EGL_NO_SURFACE);
+        CHECK_EGL(EGL_BAD_NATIVE_WINDOW);
+        /* A value past EGLint's range is no attribute value. */
+        CHECK(eglCreatePlatformWindowSurface(dpy, config, &more, wide_big) == EGL_NO_SURFACE);
+        CHECK_EGL(EGL_BAD_ATTRIBUTE);
+    }
 
     CHECK(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
     CHECK(eglDestroySurface(dpy, pixmap));

@@ -106,7 +106,7 @@ find "$d_inc" -type f -exec chmod 644 {} +
 # the package's own version is the gles_cm_version variable.
 package_version=$(sed -n 's/^version = "\(.*\)"/\1/p' "$here/Cargo.toml" | head -1)
 mkdir -p "$d_lib/pkgconfig"
-for pc in "glesv1_cm:1.1:OpenGL ES 1.1 Common" "egl:1.4:EGL 1.4, headless"; do
+for pc in "glesv1_cm:1.1:OpenGL ES 1.1 Common" "egl:1.5:EGL 1.5, headless"; do
     name=${pc%%:*}
     rest=${pc#*:}
     version=${rest%%:*}

@@ -328,13 +328,8 @@ fn core_headers_are_complete() {
         .into_keys()
         .filter(|n| n.starts_with("GL_") && !ours_gl.contains_key(n))
         .collect();
-    // Only the EGL 1.0-1.4 blocks of the system egl.h (it goes on to EGL 1.5).
-    let egl14: String = sys_egl
-        .split("#ifndef EGL_VERSION_1_5")
-        .next()
-        .unwrap_or_default()
-        .to_string();
-    missing.extend(defines(&egl14).into_keys().filter(|n| {
+    // Every block of the system egl.h, EGL 1.5's included.
+    missing.extend(defines(&sys_egl).into_keys().filter(|n| {
         n.starts_with("EGL_") && n != "EGL_EGL_PROTOTYPES" && !ours_egl.contains_key(n)
     }));
     assert!(missing.is_empty(), "missing from our headers: {missing:?}");

@@ -190,8 +190,8 @@ fn staged_install_is_stripped_versioned_private_and_builds_the_readme_program() 
 
     // pkg-config: API versions, the package version apart, the private include directory.
     assert_eq!(pkg_config(&destdir, &["--modversion", "glesv1_cm"]), "1.1");
-    assert_eq!(pkg_config(&destdir, &["--modversion", "egl"]), "1.4");
-    pkg_config(&destdir, &["--atleast-version=1.4", "egl"]);
+    assert_eq!(pkg_config(&destdir, &["--modversion", "egl"]), "1.5");
+    pkg_config(&destdir, &["--atleast-version=1.5", "egl"]);
     pkg_config(&destdir, &["--atleast-version=1.1", "glesv1_cm"]);
     assert_eq!(
         pkg_config(&destdir, &["--variable=gles_cm_version", "egl"]),

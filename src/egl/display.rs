@@ -12,9 +12,10 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::ffi::CStr;
-use std::sync::{Arc, Mutex, MutexGuard};
+use std::sync::{Arc, Mutex, MutexGuard, Weak};
 
 use crate::gles::current as gl_current;
+use crate::gles::texture::ImageSourceError;
 
 use super::capture;
 use super::config::{self, Config, Criteria, MAX_SWAP_INTERVAL, MIN_SWAP_INTERVAL};
@@ -28,10 +29,10 @@ use super::types::{EGLenum, EGLint};
 pub const DISPLAY_HANDLE: usize = 1;
 
 pub const VENDOR: &CStr = c"gles-cm";
-pub const VERSION: &CStr = c"1.4 gles-cm 0.1.0";
+pub const VERSION: &CStr = c"1.5 gles-cm 0.1.0";
 pub const CLIENT_APIS: &CStr = c"OpenGL_ES";
 /// Only what is implemented: eglGetProcAddress answers for every function.
-pub const EXTENSIONS: &CStr = c"EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context";
+pub const EXTENSIONS: &CStr = c"EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context EGL_KHR_create_context EGL_KHR_fence_sync EGL_KHR_wait_sync EGL_KHR_image_base EGL_KHR_gl_texture_2D_image";
 
 /// The client extensions (EGL_EXT_client_extensions): what eglQueryString answers for
 /// EGL_NO_DISPLAY, before any display exists.
@@ -55,6 +56,8 @@ struct Egl {
     draw_kind: BTreeMap<usize, Kind>,
     /// Addresses of native pixmaps and windows that have a surface.
     natives: BTreeSet<usize>,
+    /// Fence sync objects (EGL 1.5, EGL_KHR_fence_sync).
+    syncs: BTreeMap<usize, Fence>,
 }
 
 static EGL: Mutex<Egl> = Mutex::new(Egl {
@@ -65,6 +68,7 @@ static EGL: Mutex<Egl> = Mutex::new(Egl {
     current_on: BTreeMap::new(),
     draw_kind: BTreeMap::new(),
     natives: BTreeSet::new(),
+    syncs: BTreeMap::new(),
 });
 
 /// Locks the display; a lock poisoned by a caught panic is still usable.
@@ -123,10 +127,10 @@ pub fn get_display(_native: usize) -> usize {
 
 /// eglGetPlatformDisplayEXT. The surfaceless platform's display is the one display: it has
 /// no window system, and memory windows and pixmaps are client memory, so they stay usable.
-pub fn get_platform_display(
+pub fn get_platform_display<A>(
     platform: EGLenum,
     native: usize,
-    attribs: &[(EGLint, EGLint)],
+    attribs: &[(A, A)],
 ) -> EglResult<usize> {
     if platform != PLATFORM_SURFACELESS_MESA {
         return Err(EGL_BAD_PARAMETER);
@@ -149,7 +153,7 @@ pub fn initialize(dpy: usize) -> EglResult<(EGLint, EGLint)> {
         return Err(EGL_BAD_DISPLAY);
     }
     g.initialized = true;
-    Ok((1, 4))
+    Ok((1, 5))
 }
 
 /// eglTerminate: every handle becomes invalid; objects current to some thread live on until
@@ -165,6 +169,8 @@ pub fn terminate(dpy: usize) -> EglResult<()> {
         surfaces = std::mem::take(&mut g.surfaces);
         contexts = std::mem::take(&mut g.contexts);
         g.natives.clear();
+        g.syncs.clear();
+        crate::gles::egl_image::clear();
     }
     // Dropped outside the lock.
     drop(surfaces);
@@ -313,10 +319,10 @@ pub fn create_context(
     if thread::api() != EGL_OPENGL_ES_API {
         return Err(EGL_BAD_MATCH);
     }
-    let version = context::parse_attribs(pairs)?;
+    let request = context::parse_attribs(pairs)?;
     let mut g = egl();
     let id = g.new_id();
-    let ctx = Context::new(id, config, version, share.as_deref());
+    let ctx = Context::new(id, config, request, share.as_deref());
     g.contexts.insert(id, Arc::new(ctx));
     Ok(id)
 }
@@ -642,7 +648,7 @@ mod tests {
         let d = get_display(0);
         assert_eq!(d, DISPLAY_HANDLE);
         assert_eq!(initialize(2), Err(EGL_BAD_DISPLAY));
-        assert_eq!(initialize(d), Ok((1, 4)));
+        assert_eq!(initialize(d), Ok((1, 5)));
         assert_eq!(query_string(d, 0x1234), Err(EGL_BAD_PARAMETER));
         assert_eq!(query_string(d, EGL_CLIENT_APIS), Ok(CLIENT_APIS));
         assert_eq!(get_configs(d).unwrap().len(), 18);
@@ -692,5 +698,181 @@ mod tests {
         assert_eq!(query_context(d, c1, EGL_CONFIG_ID), Err(EGL_BAD_CONTEXT));
         assert_eq!(destroy_surface(d, s2), Err(EGL_BAD_SURFACE));
         terminate(d).unwrap();
+    }
+}
+
+/// A fence sync: signaled once every command its context had issued before it completes.
+/// Rendering is deferred until a flush, so the fence is kept unsignaled and completed (the
+/// context finished) the first time anyone looks at it: a status query, a client wait or
+/// a server wait. A fence whose context is gone has nothing left to wait for.
+pub struct Fence {
+    ctx: Weak<Context>,
+    signaled: bool,
+}
+
+/// Which entry point a sync call came through: EGL 1.5 and EGL_KHR_fence_sync name
+/// different errors for a type they do not support.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum SyncApi {
+    Core,
+    Khr,
+}
+
+/// eglCreateSync / eglCreateSyncKHR: a fence after the current context's commands.
+pub fn create_sync<A>(
+    dpy: usize,
+    kind: EGLenum,
+    attribs: &[(A, A)],
+    api: SyncApi,
+) -> EglResult<usize> {
+    let mut g = egl();
+    g.check(dpy)?;
+    if kind != EGL_SYNC_FENCE as EGLenum {
+        return Err(match api {
+            SyncApi::Core => EGL_BAD_PARAMETER,
+            SyncApi::Khr => EGL_BAD_ATTRIBUTE,
+        });
+    }
+    // A fence takes no attributes.
+    if !attribs.is_empty() {
+        return Err(EGL_BAD_ATTRIBUTE);
+    }
+    // The fence follows the commands of the calling thread's current context.
+    let cur = thread::current().ok_or(EGL_BAD_MATCH)?;
+    let id = g.new_id();
+    g.syncs.insert(
+        id,
+        Fence {
+            ctx: Arc::downgrade(&cur.ctx),
+            signaled: false,
+        },
+    );
+    Ok(id)
+}
+
+/// Completes the work a fence waits for and marks it signaled (EGL_BAD_PARAMETER for no
+/// such fence).
+fn signal(dpy: usize, sync: usize) -> EglResult<()> {
+    let ctx = {
+        let g = egl();
+        g.check(dpy)?;
+        let f = g.syncs.get(&sync).ok_or(EGL_BAD_PARAMETER)?;
+        if f.signaled {
+            return Ok(());
+        }
+        f.ctx.upgrade()
+    };
+    // Outside the display lock: finishing may wait for another thread's GL call.
+    if let Some(c) = ctx {
+        c.finish();
+    }
+    if let Some(f) = egl().syncs.get_mut(&sync) {
+        f.signaled = true;
+    }
+    Ok(())
+}
+
+/// eglClientWaitSync: every wait ends with the condition satisfied, since waiting is
+/// completing the fence's context here.
+pub fn client_wait_sync(dpy: usize, sync: usize) -> EglResult<EGLint> {
+    signal(dpy, sync)?;
+    Ok(EGL_CONDITION_SATISFIED)
+}
+
+/// eglWaitSync: the current context's later commands wait for the fence; completing the
+/// fence now is the strongest such wait.
+pub fn wait_sync(dpy: usize, sync: usize, flags: EGLint) -> EglResult<()> {
+    {
+        let g = egl();
+        g.check(dpy)?;
+        if !g.syncs.contains_key(&sync) {
+            return Err(EGL_BAD_PARAMETER);
+        }
+    }
+    if flags != 0 {
+        return Err(EGL_BAD_PARAMETER);
+    }
+    if thread::current().is_none() {
+        return Err(EGL_BAD_MATCH);
+    }
+    signal(dpy, sync)
+}
+
+/// eglGetSyncAttrib.
+pub fn get_sync_attrib(dpy: usize, sync: usize, attribute: EGLint) -> EglResult<EGLint> {
+    {
+        let g = egl();
+        g.check(dpy)?;
+        if !g.syncs.contains_key(&sync) {
+            return Err(EGL_BAD_PARAMETER);
+        }
+    }
+    match attribute {
+        EGL_SYNC_TYPE => Ok(EGL_SYNC_FENCE),
+        EGL_SYNC_CONDITION => Ok(EGL_SYNC_PRIOR_COMMANDS_COMPLETE),
+        // Asking is looking: the fence is completed, so a polling loop ends.
+        EGL_SYNC_STATUS => signal(dpy, sync).map(|()| EGL_SIGNALED),
+        _ => Err(EGL_BAD_ATTRIBUTE),
+    }
+}
+
+/// eglDestroySync.
+pub fn destroy_sync(dpy: usize, sync: usize) -> EglResult<()> {
+    let mut g = egl();
+    g.check(dpy)?;
+    g.syncs.remove(&sync).map(|_| ()).ok_or(EGL_BAD_PARAMETER)
+}
+
+/// eglCreateImage / eglCreateImageKHR from a GL 2D texture (`EGL_KHR_gl_texture_2D_image`,
+/// the one target offered): the image holds a copy of the level.
+pub fn create_image<A: Copy + Into<i64>>(
+    dpy: usize,
+    ctx: usize,
+    target: EGLenum,
+    buffer: usize,
+    attribs: &[(A, A)],
+) -> EglResult<usize> {
+    let ctx = {
+        let g = egl();
+        g.check(dpy)?;
+        if target != EGL_GL_TEXTURE_2D as EGLenum {
+            return Err(EGL_BAD_PARAMETER);
+        }
+        g.context(ctx)?
+    };
+    let mut level = 0;
+    for &(a, v) in attribs {
+        let (a, v) = (a.into(), v.into());
+        match a {
+            a if a == i64::from(EGL_GL_TEXTURE_LEVEL) => {
+                level = usize::try_from(v).map_err(|_| EGL_BAD_MATCH)?;
+            }
+            // Contents are always preserved: the image is a copy.
+            a if a == i64::from(EGL_IMAGE_PRESERVED) && (v == 0 || v == 1) => {}
+            _ => return Err(EGL_BAD_PARAMETER),
+        }
+    }
+    let name = u32::try_from(buffer).map_err(|_| EGL_BAD_PARAMETER)?;
+    if name == 0 {
+        return Err(EGL_BAD_PARAMETER);
+    }
+    let image = gl_current::lock(&ctx.gl)
+        .egl_image_source(name, level)
+        .map_err(|e| match e {
+            ImageSourceError::NotATexture2D => EGL_BAD_PARAMETER,
+            ImageSourceError::NoSuchLevel => EGL_BAD_MATCH,
+        })?;
+    let id = egl().new_id();
+    crate::gles::egl_image::insert(id, image);
+    Ok(id)
+}
+
+/// eglDestroyImage.
+pub fn destroy_image(dpy: usize, image: usize) -> EglResult<()> {
+    egl().check(dpy)?;
+    if crate::gles::egl_image::remove(image) {
+        Ok(())
+    } else {
+        Err(EGL_BAD_PARAMETER)
     }
 }

@@ -52,23 +52,53 @@ fn handle(id: usize) -> *mut c_void {
 /// # Safety
 /// A non-null `list` must point to attribute/value pairs ending with EGL_NONE.
 unsafe fn attrib_pairs(list: *const EGLint) -> Vec<(EGLint, EGLint)> {
+    // SAFETY: forwarded to the caller's contract.
+    unsafe { pairs_until(list, EGL_NONE) }
+}
+
+/// [`attrib_pairs`] for EGL 1.5's pointer-wide `EGLAttrib` lists.
+///
+/// # Safety
+/// As [`attrib_pairs`].
+unsafe fn attrib_pairs_wide(list: *const EGLAttrib) -> Vec<(EGLAttrib, EGLAttrib)> {
+    // SAFETY: forwarded to the caller's contract.
+    unsafe { pairs_until(list, EGL_NONE as EGLAttrib) }
+}
+
+/// # Safety
+/// A non-null `list` must point to attribute/value pairs ending with `none`.
+unsafe fn pairs_until<T: Copy + PartialEq>(list: *const T, none: T) -> Vec<(T, T)> {
     let mut pairs = Vec::new();
     if list.is_null() {
         return pairs;
     }
     let mut i = 0;
     loop {
-        // SAFETY: by the caller's contract the list is readable up to its EGL_NONE, and we
+        // SAFETY: by the caller's contract the list is readable up to its terminator, and we
         // stop there.
         let attr = unsafe { list.add(i).read_unaligned() };
-        if attr == EGL_NONE {
+        if attr == none {
             return pairs;
         }
-        // SAFETY: an attribute that is not EGL_NONE is followed by its value.
+        // SAFETY: an attribute that is not the terminator is followed by its value.
         let value = unsafe { list.add(i + 1).read_unaligned() };
         pairs.push((attr, value));
         i += 2;
     }
+}
+
+/// EGLAttrib pairs as EGLint ones, for the surface attributes (all of which are EGLint
+/// values); a value out of that range is EGL_BAD_ATTRIBUTE.
+fn narrow(pairs: &[(EGLAttrib, EGLAttrib)]) -> EglResult<Vec<(EGLint, EGLint)>> {
+    pairs
+        .iter()
+        .map(|&(a, v)| {
+            Ok((
+                EGLint::try_from(a).map_err(|_| EGL_BAD_ATTRIBUTE)?,
+                EGLint::try_from(v).map_err(|_| EGL_BAD_ATTRIBUTE)?,
+            ))
+        })
+        .collect()
 }
 
 /// Writes `v` to an optional output argument.
@@ -345,17 +375,25 @@ pub unsafe extern "C" fn eglCreateWindowSurface(
         // SAFETY: forwarded to the caller's contract.
         let pairs = unsafe { attrib_pairs(attrib_list) };
         // SAFETY: forwarded to the caller's contract.
-        let memory = unsafe { client_memory(window_as_pixmap(win)) };
-        d::create_native(
-            id(dpy),
-            id(config),
-            Kind::Window,
-            win as usize,
-            memory,
-            &pairs,
-        )
-        .map(handle)
+        unsafe { create_native(dpy, config, Kind::Window, window_as_pixmap(win), &pairs) }
     })
+}
+
+/// A window or pixmap surface on a memory pixmap-shaped struct.
+///
+/// # Safety
+/// `memory` is null or points to a valid `EGLMemoryPixmap`-shaped struct whose pixels stay
+/// valid while the surface exists.
+unsafe fn create_native(
+    dpy: EGLDisplay,
+    config: EGLConfig,
+    kind: Kind,
+    memory: *const EGLMemoryPixmap,
+    pairs: &[(EGLint, EGLint)],
+) -> EglResult<EGLSurface> {
+    // SAFETY: forwarded to the caller's contract.
+    let client = unsafe { client_memory(memory) };
+    d::create_native(id(dpy), id(config), kind, memory as usize, client, pairs).map(handle)
 }
 
 /// # Safety
@@ -372,16 +410,7 @@ pub unsafe extern "C" fn eglCreatePixmapSurface(
         // SAFETY: forwarded to the caller's contract.
         let pairs = unsafe { attrib_pairs(attrib_list) };
         // SAFETY: forwarded to the caller's contract.
-        let memory = unsafe { client_memory(pixmap) };
-        d::create_native(
-            id(dpy),
-            id(config),
-            Kind::Pixmap,
-            pixmap as usize,
-            memory,
-            &pairs,
-        )
-        .map(handle)
+        unsafe { create_native(dpy, config, Kind::Pixmap, pixmap, &pairs) }
     })
 }
 
@@ -633,4 +662,230 @@ pub unsafe extern "C" fn eglGetProcAddress(
             }),
         )
     })
+}
+
+/// EGL 1.5: eglGetPlatformDisplayEXT with an `EGLAttrib` list.
+///
+/// # Safety
+/// `attrib_list` is null or EGL_NONE-terminated.
+#[no_mangle]
+pub unsafe extern "C" fn eglGetPlatformDisplay(
+    platform: EGLenum,
+    native_display: *mut c_void,
+    attrib_list: *const EGLAttrib,
+) -> EGLDisplay {
+    call(EGL_NO_DISPLAY, || {
+        // SAFETY: forwarded to the caller's contract.
+        let pairs = unsafe { attrib_pairs_wide(attrib_list) };
+        d::get_platform_display(platform, native_display as usize, &pairs).map(handle)
+    })
+}
+
+/// EGL 1.5: the native window is a `struct EGLMemoryWindow`.
+///
+/// # Safety
+/// As eglCreateWindowSurface's, with `native_window` for `win`.
+#[no_mangle]
+pub unsafe extern "C" fn eglCreatePlatformWindowSurface(
+    dpy: EGLDisplay,
+    config: EGLConfig,
+    native_window: *mut c_void,
+    attrib_list: *const EGLAttrib,
+) -> EGLSurface {
+    call(EGL_NO_SURFACE, || {
+        // SAFETY: forwarded to the caller's contract.
+        let pairs = narrow(&unsafe { attrib_pairs_wide(attrib_list) })?;
+        let memory = window_as_pixmap(native_window.cast());
+        // SAFETY: forwarded to the caller's contract.
+        unsafe { create_native(dpy, config, Kind::Window, memory, &pairs) }
+    })
+}
+
+/// EGL 1.5: the native pixmap is a `struct EGLMemoryPixmap`.
+///
+/// # Safety
+/// As eglCreatePixmapSurface's, with `native_pixmap` for `pixmap`.
+#[no_mangle]
+pub unsafe extern "C" fn eglCreatePlatformPixmapSurface(
+    dpy: EGLDisplay,
+    config: EGLConfig,
+    native_pixmap: *mut c_void,
+    attrib_list: *const EGLAttrib,
+) -> EGLSurface {
+    call(EGL_NO_SURFACE, || {
+        // SAFETY: forwarded to the caller's contract.
+        let pairs = narrow(&unsafe { attrib_pairs_wide(attrib_list) })?;
+        // SAFETY: forwarded to the caller's contract.
+        unsafe { create_native(dpy, config, Kind::Pixmap, native_pixmap.cast(), &pairs) }
+    })
+}
+
+/// EGL 1.5 fence syncs.
+///
+/// # Safety
+/// `attrib_list` is null or EGL_NONE-terminated.
+#[no_mangle]
+pub unsafe extern "C" fn eglCreateSync(
+    dpy: EGLDisplay,
+    type_: EGLenum,
+    attrib_list: *const EGLAttrib,
+) -> EGLSync {
+    call(EGL_NO_SYNC, || {
+        // SAFETY: forwarded to the caller's contract.
+        let pairs = unsafe { attrib_pairs_wide(attrib_list) };
+        d::create_sync(id(dpy), type_, &pairs, d::SyncApi::Core).map(handle)
+    })
+}
+
+/// EGL_KHR_fence_sync's eglCreateSync, with an `EGLint` list.
+///
+/// # Safety
+/// `attrib_list` is null or EGL_NONE-terminated.
+#[no_mangle]
+pub unsafe extern "C" fn eglCreateSyncKHR(
+    dpy: EGLDisplay,
+    type_: EGLenum,
+    attrib_list: *const EGLint,
+) -> EGLSyncKHR {
+    call(EGL_NO_SYNC, || {
+        // SAFETY: forwarded to the caller's contract.
+        let pairs = unsafe { attrib_pairs(attrib_list) };
+        d::create_sync(id(dpy), type_, &pairs, d::SyncApi::Khr).map(handle)
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn eglDestroySync(dpy: EGLDisplay, sync: EGLSync) -> EGLBoolean {
+    call_bool(|| d::destroy_sync(id(dpy), id(sync)))
+}
+
+#[no_mangle]
+pub extern "C" fn eglDestroySyncKHR(dpy: EGLDisplay, sync: EGLSyncKHR) -> EGLBoolean {
+    eglDestroySync(dpy, sync)
+}
+
+#[no_mangle]
+pub extern "C" fn eglClientWaitSync(
+    dpy: EGLDisplay,
+    sync: EGLSync,
+    flags: EGLint,
+    timeout: EGLTime,
+) -> EGLint {
+    // Every wait completes the fence, so neither the flush flag nor the timeout matters.
+    let _ = (flags, timeout);
+    call(EGL_FALSE as EGLint, || {
+        d::client_wait_sync(id(dpy), id(sync))
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn eglClientWaitSyncKHR(
+    dpy: EGLDisplay,
+    sync: EGLSyncKHR,
+    flags: EGLint,
+    timeout: EGLTimeKHR,
+) -> EGLint {
+    eglClientWaitSync(dpy, sync, flags, timeout)
+}
+
+#[no_mangle]
+pub extern "C" fn eglWaitSync(dpy: EGLDisplay, sync: EGLSync, flags: EGLint) -> EGLBoolean {
+    call_bool(|| d::wait_sync(id(dpy), id(sync), flags))
+}
+
+/// EGL_KHR_wait_sync: eglWaitSync returning EGLint.
+#[no_mangle]
+pub extern "C" fn eglWaitSyncKHR(dpy: EGLDisplay, sync: EGLSyncKHR, flags: EGLint) -> EGLint {
+    eglWaitSync(dpy, sync, flags) as EGLint
+}
+
+/// # Safety
+/// `value` is null or writable.
+#[no_mangle]
+pub unsafe extern "C" fn eglGetSyncAttrib(
+    dpy: EGLDisplay,
+    sync: EGLSync,
+    attribute: EGLint,
+    value: *mut EGLAttrib,
+) -> EGLBoolean {
+    call_bool(|| {
+        let v = d::get_sync_attrib(id(dpy), id(sync), attribute)?;
+        if value.is_null() {
+            return Err(EGL_BAD_PARAMETER);
+        }
+        // SAFETY: non-null, and writable by the caller's contract.
+        unsafe { put(value, v as EGLAttrib) };
+        Ok(())
+    })
+}
+
+/// EGL_KHR_fence_sync's eglGetSyncAttrib, answering in an `EGLint`.
+///
+/// # Safety
+/// `value` is null or writable.
+#[no_mangle]
+pub unsafe extern "C" fn eglGetSyncAttribKHR(
+    dpy: EGLDisplay,
+    sync: EGLSyncKHR,
+    attribute: EGLint,
+    value: *mut EGLint,
+) -> EGLBoolean {
+    call_bool(|| {
+        let v = d::get_sync_attrib(id(dpy), id(sync), attribute)?;
+        if value.is_null() {
+            return Err(EGL_BAD_PARAMETER);
+        }
+        // SAFETY: non-null, and writable by the caller's contract.
+        unsafe { put(value, v) };
+        Ok(())
+    })
+}
+
+/// EGL 1.5 images from GL textures (`EGL_GL_TEXTURE_2D`; `buffer` is the texture name).
+///
+/// # Safety
+/// `attrib_list` is null or EGL_NONE-terminated.
+#[no_mangle]
+pub unsafe extern "C" fn eglCreateImage(
+    dpy: EGLDisplay,
+    ctx: EGLContext,
+    target: EGLenum,
+    buffer: EGLClientBuffer,
+    attrib_list: *const EGLAttrib,
+) -> EGLImage {
+    call(EGL_NO_IMAGE, || {
+        // SAFETY: forwarded to the caller's contract.
+        let pairs = unsafe { attrib_pairs_wide(attrib_list) };
+        let pairs: Vec<(i64, i64)> = pairs.iter().map(|&(a, v)| (a as i64, v as i64)).collect();
+        d::create_image(id(dpy), id(ctx), target, buffer as usize, &pairs).map(handle)
+    })
+}
+
+/// EGL_KHR_image_base's eglCreateImage, with an `EGLint` list.
+///
+/// # Safety
+/// `attrib_list` is null or EGL_NONE-terminated.
+#[no_mangle]
+pub unsafe extern "C" fn eglCreateImageKHR(
+    dpy: EGLDisplay,
+    ctx: EGLContext,
+    target: EGLenum,
+    buffer: EGLClientBuffer,
+    attrib_list: *const EGLint,
+) -> EGLImageKHR {
+    call(EGL_NO_IMAGE, || {
+        // SAFETY: forwarded to the caller's contract.
+        let pairs = unsafe { attrib_pairs(attrib_list) };
+        d::create_image(id(dpy), id(ctx), target, buffer as usize, &pairs).map(handle)
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn eglDestroyImage(dpy: EGLDisplay, image: EGLImage) -> EGLBoolean {
+    call_bool(|| d::destroy_image(id(dpy), id(image)))
+}
+
+#[no_mangle]
+pub extern "C" fn eglDestroyImageKHR(dpy: EGLDisplay, image: EGLImageKHR) -> EGLBoolean {
+    eglDestroyImage(dpy, image)
 }

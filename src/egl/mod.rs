@@ -1,4 +1,4 @@
-//! EGL 1.4: the display, configs, surfaces (pbuffers, memory pixmaps and memory windows),
+//! EGL 1.5: the display, configs, surfaces (pbuffers, memory pixmaps and memory windows),
 //! contexts and the per-thread current binding, with the C entry points in `ffi`.
 //!
 //! Core logic lives in safe modules; `ffi` is the only place with `unsafe` code.

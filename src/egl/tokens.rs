@@ -1,4 +1,4 @@
-//! EGL 1.4 token values (the Khronos registry's numbers).
+//! EGL 1.5 token values (the Khronos registry's numbers).
 //!
 //! Grouped by the EGL version that introduced them; each group starts with a
 //! `// Version: EGL_VERSION_1_x` line, which `build.rs` turns into one `#ifndef EGL_VERSION_1_x`
@@ -147,3 +147,49 @@ pub const EGL_MULTISAMPLE_RESOLVE_BOX: EGLint = 0x309B;
 pub const EGL_OPENGL_API: EGLenum = 0x30A2;
 pub const EGL_OPENGL_BIT: EGLint = 0x0008;
 pub const EGL_SWAP_BEHAVIOR_PRESERVED_BIT: EGLint = 0x0400;
+
+// Version: EGL_VERSION_1_5
+// EGL 1.5: context versions and flags, sync objects, images, the GL colorspace.
+pub const EGL_CONTEXT_MAJOR_VERSION: EGLint = 0x3098;
+pub const EGL_CONTEXT_MINOR_VERSION: EGLint = 0x30FB;
+pub const EGL_CONTEXT_OPENGL_PROFILE_MASK: EGLint = 0x30FD;
+pub const EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY: EGLint = 0x31BD;
+pub const EGL_NO_RESET_NOTIFICATION: EGLint = 0x31BE;
+pub const EGL_LOSE_CONTEXT_ON_RESET: EGLint = 0x31BF;
+pub const EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT: EGLint = 0x00000001;
+pub const EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT: EGLint = 0x00000002;
+pub const EGL_CONTEXT_OPENGL_DEBUG: EGLint = 0x31B0;
+pub const EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE: EGLint = 0x31B1;
+pub const EGL_CONTEXT_OPENGL_ROBUST_ACCESS: EGLint = 0x31B2;
+pub const EGL_OPENGL_ES3_BIT: EGLint = 0x00000040;
+pub const EGL_CL_EVENT_HANDLE: EGLint = 0x309C;
+pub const EGL_SYNC_CL_EVENT: EGLint = 0x30FE;
+pub const EGL_SYNC_CL_EVENT_COMPLETE: EGLint = 0x30FF;
+pub const EGL_SYNC_PRIOR_COMMANDS_COMPLETE: EGLint = 0x30F0;
+pub const EGL_SYNC_TYPE: EGLint = 0x30F7;
+pub const EGL_SYNC_STATUS: EGLint = 0x30F1;
+pub const EGL_SYNC_CONDITION: EGLint = 0x30F8;
+pub const EGL_SIGNALED: EGLint = 0x30F2;
+pub const EGL_UNSIGNALED: EGLint = 0x30F3;
+pub const EGL_SYNC_FLUSH_COMMANDS_BIT: EGLint = 0x0001;
+pub const EGL_FOREVER: EGLTime = 0xFFFF_FFFF_FFFF_FFFF;
+pub const EGL_TIMEOUT_EXPIRED: EGLint = 0x30F5;
+pub const EGL_CONDITION_SATISFIED: EGLint = 0x30F6;
+pub const EGL_NO_SYNC: EGLSync = null_mut();
+pub const EGL_SYNC_FENCE: EGLint = 0x30F9;
+pub const EGL_GL_COLORSPACE: EGLint = 0x309D;
+pub const EGL_GL_COLORSPACE_SRGB: EGLint = 0x3089;
+pub const EGL_GL_COLORSPACE_LINEAR: EGLint = 0x308A;
+pub const EGL_GL_RENDERBUFFER: EGLint = 0x30B9;
+pub const EGL_GL_TEXTURE_2D: EGLint = 0x30B1;
+pub const EGL_GL_TEXTURE_LEVEL: EGLint = 0x30BC;
+pub const EGL_GL_TEXTURE_3D: EGLint = 0x30B2;
+pub const EGL_GL_TEXTURE_ZOFFSET: EGLint = 0x30BD;
+pub const EGL_GL_TEXTURE_CUBE_MAP_POSITIVE_X: EGLint = 0x30B3;
+pub const EGL_GL_TEXTURE_CUBE_MAP_NEGATIVE_X: EGLint = 0x30B4;
+pub const EGL_GL_TEXTURE_CUBE_MAP_POSITIVE_Y: EGLint = 0x30B5;
+pub const EGL_GL_TEXTURE_CUBE_MAP_NEGATIVE_Y: EGLint = 0x30B6;
+pub const EGL_GL_TEXTURE_CUBE_MAP_POSITIVE_Z: EGLint = 0x30B7;
+pub const EGL_GL_TEXTURE_CUBE_MAP_NEGATIVE_Z: EGLint = 0x30B8;
+pub const EGL_IMAGE_PRESERVED: EGLint = 0x30D2;
+pub const EGL_NO_IMAGE: EGLImage = null_mut();

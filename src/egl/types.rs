@@ -13,6 +13,16 @@ pub type EGLSurface = *mut c_void;
 pub type EGLContext = *mut c_void;
 pub type EGLClientBuffer = *mut c_void;
 pub type EGLNativeDisplayType = *mut c_void;
+/// EGL 1.5: attribute values wide enough for a pointer.
+pub type EGLAttrib = isize;
+/// EGL 1.5: nanoseconds.
+pub type EGLTime = u64;
+pub type EGLSync = *mut c_void;
+pub type EGLImage = *mut c_void;
+/// The extensions' names for the same types (EGL_KHR_fence_sync, EGL_KHR_image_base).
+pub type EGLTimeKHR = u64;
+pub type EGLSyncKHR = *mut c_void;
+pub type EGLImageKHR = *mut c_void;
 pub type EGLNativePixmapType = *mut EGLMemoryPixmap;
 pub type EGLNativeWindowType = *mut EGLMemoryWindow;
 

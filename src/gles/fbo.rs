@@ -23,7 +23,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
 use crate::core::target::try_filled;
-use crate::core::texture::{BaseFormat, Texture, MAX_LEVEL, MAX_TEXTURE_SIZE};
+use crate::core::texture::{BaseFormat, Image, Texture, MAX_LEVEL, MAX_TEXTURE_SIZE};
 use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
 
 use super::buffer::lock_objects;
@@ -685,6 +685,35 @@ impl Context {
             .renderbuffers
             .named(name)
             .is_some()
+    }
+
+    /// `glEGLImageTargetRenderbufferStorageOES` (`OES_EGL_image`): the bound renderbuffer
+    /// becomes an RGBA8 color buffer holding `image`.
+    pub fn egl_image_target_renderbuffer_storage(&mut self, target: GLenum, image: Option<Image>) {
+        if target != GL_RENDERBUFFER_OES {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let Some(image) = image else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
+        if self.fbo.renderbuffer.is_none() {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        self.fbo_changing();
+        let mut o = lock_objects(&self.shared);
+        let Some(rb) = o.renderbuffers.get_mut(&self.fbo.renderbuffer) else {
+            return;
+        };
+        // Texture images hold RGBA8 words, which is the RGBA8 renderbuffer's encoding too.
+        *rb = Renderbuffer {
+            internal_format: GL_RGBA8_OES,
+            width: image.width,
+            height: image.height,
+            kind: RenderbufferKind::Color(ColorFormat::Rgba8888),
+            words: image.texels,
+            bytes: Vec::new(),
+            version: next_generation(),
+        };
     }
 
     pub fn renderbuffer_storage(

@@ -161,6 +161,8 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_texture_env_crossbar",
     "GL_EXT_texture_filter_anisotropic",
     "GL_OES_surfaceless_context",
+    "GL_OES_EGL_image",
+    "GL_OES_EGL_sync",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.

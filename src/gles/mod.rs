@@ -7,6 +7,7 @@ pub mod context;
 pub mod current;
 pub mod current_values;
 pub mod draw_texture;
+pub mod egl_image;
 pub mod fbo;
 pub mod ffi;
 pub mod fog;

@@ -1347,6 +1347,48 @@ impl Context {
         self.texture_changing();
         self.with_bound_texture(Texture::clear_levels);
     }
+    /// The `eglCreateImage` hook (`EGL_KHR_gl_texture_2D_image`): a copy of `level` of the
+    /// 2D texture named `name`.
+    pub fn egl_image_source(&self, name: GLuint, level: usize) -> Result<Image, ImageSourceError> {
+        let o = lock_objects(&self.shared);
+        let t = o
+            .textures
+            .named(name)
+            .filter(|t| !t.is_cube_map())
+            .ok_or(ImageSourceError::NotATexture2D)?;
+        // Level 0 must exist; another level must be one the texture has.
+        let image = t.level(level).ok_or(if level == 0 {
+            ImageSourceError::NotATexture2D
+        } else {
+            ImageSourceError::NoSuchLevel
+        })?;
+        Ok(image.clone())
+    }
+
+    /// `glEGLImageTargetTexture2DOES` (`OES_EGL_image`): the texture bound to the active
+    /// unit's `GL_TEXTURE_2D` takes `image` as its only level.
+    pub fn egl_image_target_texture_2d(&mut self, target: GLenum, image: Option<Image>) {
+        if target != GL_TEXTURE_2D {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let Some(image) = image else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
+        self.texture_changing();
+        self.with_bound_texture(|t| {
+            t.clear_levels();
+            t.set_level(0, image);
+        });
+    }
+}
+
+/// Why a texture cannot be the source of an EGLImage.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImageSourceError {
+    /// No 2D texture of that name, or its level 0 is not specified.
+    NotATexture2D,
+    /// The texture has no such level.
+    NoSuchLevel,
 }
 
 /// A value no GL enum has, for parameters that did not convert to an integer.

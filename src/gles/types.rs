@@ -4,6 +4,8 @@
 use libc::{c_char, c_float, c_int, c_short, c_uchar, c_uint, c_ushort, c_void};
 
 pub type GLvoid = c_void;
+/// `OES_EGL_image`: an EGLImage handle as the GL takes it.
+pub type GLeglImageOES = *mut c_void;
 pub type GLchar = c_char;
 pub type GLenum = c_uint;
 pub type GLboolean = c_uchar;

@@ -166,3 +166,11 @@ pub unsafe extern "C" fn glDiscardFramebufferEXT(
         c.discard_framebuffer(target, &list.unwrap_or_default())
     })
 }
+
+/// `OES_EGL_image`. The handle is looked up, never dereferenced.
+#[no_mangle]
+pub extern "C" fn glEGLImageTargetRenderbufferStorageOES(target: GLenum, image: GLeglImageOES) {
+    with_context((), |c| {
+        c.egl_image_target_renderbuffer_storage(target, crate::gles::egl_image::get(image as usize))
+    })
+}

@@ -316,3 +316,11 @@ pub extern "C" fn glCopyTexSubImage2D(
         c.copy_tex_sub_image_2d(target, level, xoffset, yoffset, x, y, width, height)
     })
 }
+
+/// `OES_EGL_image`. The handle is looked up, never dereferenced.
+#[no_mangle]
+pub extern "C" fn glEGLImageTargetTexture2DOES(target: GLenum, image: GLeglImageOES) {
+    with_context((), |c| {
+        c.egl_image_target_texture_2d(target, crate::gles::egl_image::get(image as usize))
+    })
+}
