@@ -8,6 +8,7 @@
  * Mesa ignores unknown image attributes: CONFORMANCE.md)
  */
 #include "common.h"
+#include "fbo_functions.h"
 #include <EGL/eglext.h>
 #include <GLES/glext.h>
 
@@ -17,12 +18,6 @@ static PFNEGLCREATEIMAGEKHRPROC create_image_khr;
 static PFNEGLDESTROYIMAGEKHRPROC destroy_image_khr;
 static PFNGLEGLIMAGETARGETTEXTURE2DOESPROC image_target_texture;
 static PFNGLEGLIMAGETARGETRENDERBUFFERSTORAGEOESPROC image_target_renderbuffer;
-static PFNGLGENFRAMEBUFFERSOESPROC gen_framebuffers;
-static PFNGLGENRENDERBUFFERSOESPROC gen_renderbuffers;
-static PFNGLBINDFRAMEBUFFEROESPROC bind_framebuffer;
-static PFNGLBINDRENDERBUFFEROESPROC bind_renderbuffer;
-static PFNGLFRAMEBUFFERRENDERBUFFEROESPROC framebuffer_renderbuffer;
-static PFNGLCHECKFRAMEBUFFERSTATUSOESPROC check_framebuffer_status;
 
 static int has_word(const char *list, const char *word)
 {
@@ -46,18 +41,9 @@ static void load(void)
         "glEGLImageTargetTexture2DOES");
     image_target_renderbuffer = (PFNGLEGLIMAGETARGETRENDERBUFFERSTORAGEOESPROC)eglGetProcAddress(
         "glEGLImageTargetRenderbufferStorageOES");
-    gen_framebuffers = (PFNGLGENFRAMEBUFFERSOESPROC)eglGetProcAddress("glGenFramebuffersOES");
-    gen_renderbuffers = (PFNGLGENRENDERBUFFERSOESPROC)eglGetProcAddress("glGenRenderbuffersOES");
-    bind_framebuffer = (PFNGLBINDFRAMEBUFFEROESPROC)eglGetProcAddress("glBindFramebufferOES");
-    bind_renderbuffer = (PFNGLBINDRENDERBUFFEROESPROC)eglGetProcAddress("glBindRenderbufferOES");
-    framebuffer_renderbuffer = (PFNGLFRAMEBUFFERRENDERBUFFEROESPROC)eglGetProcAddress(
-        "glFramebufferRenderbufferOES");
-    check_framebuffer_status = (PFNGLCHECKFRAMEBUFFERSTATUSOESPROC)eglGetProcAddress(
-        "glCheckFramebufferStatusOES");
     CHECK(create_image && destroy_image && create_image_khr && destroy_image_khr &&
-          image_target_texture && image_target_renderbuffer && gen_framebuffers &&
-          gen_renderbuffers && bind_framebuffer && bind_renderbuffer &&
-          framebuffer_renderbuffer && check_framebuffer_status);
+          image_target_texture && image_target_renderbuffer);
+    ct_load_fbo();
 }
 
 /* A quad over the 8 × 8 surface sampling the bound texture (NEAREST). */
@@ -127,18 +113,18 @@ int main(void)
     CHECK_PIXEL(3, 3, 128, 128, 128, 255, 0);
 
     /* A renderbuffer's storage, read back through a framebuffer object. */
-    gen_framebuffers(1, &fb);
-    gen_renderbuffers(1, &rb);
-    bind_renderbuffer(GL_RENDERBUFFER_OES, rb);
+    glGenFramebuffersOES(1, &fb);
+    glGenRenderbuffersOES(1, &rb);
+    glBindRenderbufferOES(GL_RENDERBUFFER_OES, rb);
     image_target_renderbuffer(GL_RENDERBUFFER_OES, (GLeglImageOES)img);
     CHECK_GL(GL_NO_ERROR);
-    bind_framebuffer(GL_FRAMEBUFFER_OES, fb);
-    framebuffer_renderbuffer(GL_FRAMEBUFFER_OES, GL_COLOR_ATTACHMENT0_OES, GL_RENDERBUFFER_OES,
+    glBindFramebufferOES(GL_FRAMEBUFFER_OES, fb);
+    glFramebufferRenderbufferOES(GL_FRAMEBUFFER_OES, GL_COLOR_ATTACHMENT0_OES, GL_RENDERBUFFER_OES,
                              rb);
-    CHECK(check_framebuffer_status(GL_FRAMEBUFFER_OES) == GL_FRAMEBUFFER_COMPLETE_OES);
+    CHECK(glCheckFramebufferStatusOES(GL_FRAMEBUFFER_OES) == GL_FRAMEBUFFER_COMPLETE_OES);
     CHECK_PIXEL(0, 0, 255, 0, 0, 255, 0);
     CHECK_PIXEL(1, 1, 255, 255, 255, 255, 0);
-    bind_framebuffer(GL_FRAMEBUFFER_OES, 0);
+    glBindFramebufferOES(GL_FRAMEBUFFER_OES, 0);
 
     /* GL errors: a target the call does not take, a handle that is no image. */
     image_target_texture(GL_TEXTURE_CUBE_MAP_OES, (GLeglImageOES)img);

@@ -8,31 +8,7 @@
  * as the specification says.
  */
 #include "common.h"
-
-static PFNGLGENFRAMEBUFFERSOESPROC glGenFramebuffersOES;
-static PFNGLGENRENDERBUFFERSOESPROC glGenRenderbuffersOES;
-static PFNGLBINDFRAMEBUFFEROESPROC glBindFramebufferOES;
-static PFNGLBINDRENDERBUFFEROESPROC glBindRenderbufferOES;
-static PFNGLRENDERBUFFERSTORAGEOESPROC glRenderbufferStorageOES;
-static PFNGLFRAMEBUFFERRENDERBUFFEROESPROC glFramebufferRenderbufferOES;
-static PFNGLCHECKFRAMEBUFFERSTATUSOESPROC glCheckFramebufferStatusOES;
-
-static void load(void)
-{
-    glGenFramebuffersOES = (PFNGLGENFRAMEBUFFERSOESPROC)eglGetProcAddress("glGenFramebuffersOES");
-    glGenRenderbuffersOES = (PFNGLGENRENDERBUFFERSOESPROC)eglGetProcAddress("glGenRenderbuffersOES");
-    glBindFramebufferOES = (PFNGLBINDFRAMEBUFFEROESPROC)eglGetProcAddress("glBindFramebufferOES");
-    glBindRenderbufferOES = (PFNGLBINDRENDERBUFFEROESPROC)eglGetProcAddress("glBindRenderbufferOES");
-    glRenderbufferStorageOES =
-        (PFNGLRENDERBUFFERSTORAGEOESPROC)eglGetProcAddress("glRenderbufferStorageOES");
-    glFramebufferRenderbufferOES =
-        (PFNGLFRAMEBUFFERRENDERBUFFEROESPROC)eglGetProcAddress("glFramebufferRenderbufferOES");
-    glCheckFramebufferStatusOES =
-        (PFNGLCHECKFRAMEBUFFERSTATUSOESPROC)eglGetProcAddress("glCheckFramebufferStatusOES");
-    CHECK(glGenFramebuffersOES && glGenRenderbuffersOES && glBindFramebufferOES &&
-          glBindRenderbufferOES && glRenderbufferStorageOES && glFramebufferRenderbufferOES &&
-          glCheckFramebufferStatusOES);
-}
+#include "fbo_functions.h"
 
 static int has_word(const char *list, const char *word)
 {
@@ -102,7 +78,7 @@ int main(void)
     const char *ext;
 
     ct_init(8, 8);
-    load();
+    ct_load_fbo();
     CHECK(has_word((const char *)glGetString(GL_EXTENSIONS), "GL_OES_surfaceless_context"));
     ext = eglQueryString(ct.display, EGL_EXTENSIONS);
     CHECK(has_word(ext, "EGL_KHR_surfaceless_context"));

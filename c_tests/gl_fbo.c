@@ -3,48 +3,7 @@
  * and stencil renderbuffers, errors, glGenerateMipmapOES, and renderbuffers shared with a
  * second context of the share group. */
 #include "common.h"
-
-/* Extension functions through eglGetProcAddress (Mesa exports them only that way). */
-static PFNGLGENFRAMEBUFFERSOESPROC glGenFramebuffersOES;
-static PFNGLDELETEFRAMEBUFFERSOESPROC glDeleteFramebuffersOES;
-static PFNGLBINDFRAMEBUFFEROESPROC glBindFramebufferOES;
-static PFNGLISFRAMEBUFFEROESPROC glIsFramebufferOES;
-static PFNGLGENRENDERBUFFERSOESPROC glGenRenderbuffersOES;
-static PFNGLDELETERENDERBUFFERSOESPROC glDeleteRenderbuffersOES;
-static PFNGLBINDRENDERBUFFEROESPROC glBindRenderbufferOES;
-static PFNGLISRENDERBUFFEROESPROC glIsRenderbufferOES;
-static PFNGLRENDERBUFFERSTORAGEOESPROC glRenderbufferStorageOES;
-static PFNGLGETRENDERBUFFERPARAMETERIVOESPROC glGetRenderbufferParameterivOES;
-static PFNGLFRAMEBUFFERRENDERBUFFEROESPROC glFramebufferRenderbufferOES;
-static PFNGLFRAMEBUFFERTEXTURE2DOESPROC glFramebufferTexture2DOES;
-static PFNGLCHECKFRAMEBUFFERSTATUSOESPROC glCheckFramebufferStatusOES;
-static PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVOESPROC glGetFramebufferAttachmentParameterivOES;
-static PFNGLGENERATEMIPMAPOESPROC glGenerateMipmapOES;
-
-static int load_functions(void)
-{
-    glGenFramebuffersOES = (PFNGLGENFRAMEBUFFERSOESPROC)eglGetProcAddress("glGenFramebuffersOES");
-    glDeleteFramebuffersOES = (PFNGLDELETEFRAMEBUFFERSOESPROC)eglGetProcAddress("glDeleteFramebuffersOES");
-    glBindFramebufferOES = (PFNGLBINDFRAMEBUFFEROESPROC)eglGetProcAddress("glBindFramebufferOES");
-    glIsFramebufferOES = (PFNGLISFRAMEBUFFEROESPROC)eglGetProcAddress("glIsFramebufferOES");
-    glGenRenderbuffersOES = (PFNGLGENRENDERBUFFERSOESPROC)eglGetProcAddress("glGenRenderbuffersOES");
-    glDeleteRenderbuffersOES = (PFNGLDELETERENDERBUFFERSOESPROC)eglGetProcAddress("glDeleteRenderbuffersOES");
-    glBindRenderbufferOES = (PFNGLBINDRENDERBUFFEROESPROC)eglGetProcAddress("glBindRenderbufferOES");
-    glIsRenderbufferOES = (PFNGLISRENDERBUFFEROESPROC)eglGetProcAddress("glIsRenderbufferOES");
-    glRenderbufferStorageOES = (PFNGLRENDERBUFFERSTORAGEOESPROC)eglGetProcAddress("glRenderbufferStorageOES");
-    glGetRenderbufferParameterivOES = (PFNGLGETRENDERBUFFERPARAMETERIVOESPROC)eglGetProcAddress("glGetRenderbufferParameterivOES");
-    glFramebufferRenderbufferOES = (PFNGLFRAMEBUFFERRENDERBUFFEROESPROC)eglGetProcAddress("glFramebufferRenderbufferOES");
-    glFramebufferTexture2DOES = (PFNGLFRAMEBUFFERTEXTURE2DOESPROC)eglGetProcAddress("glFramebufferTexture2DOES");
-    glCheckFramebufferStatusOES = (PFNGLCHECKFRAMEBUFFERSTATUSOESPROC)eglGetProcAddress("glCheckFramebufferStatusOES");
-    glGetFramebufferAttachmentParameterivOES = (PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVOESPROC)eglGetProcAddress("glGetFramebufferAttachmentParameterivOES");
-    glGenerateMipmapOES = (PFNGLGENERATEMIPMAPOESPROC)eglGetProcAddress("glGenerateMipmapOES");
-    return glGenFramebuffersOES && glDeleteFramebuffersOES && glBindFramebufferOES &&
-           glIsFramebufferOES && glGenRenderbuffersOES && glDeleteRenderbuffersOES &&
-           glBindRenderbufferOES && glIsRenderbufferOES && glRenderbufferStorageOES &&
-           glGetRenderbufferParameterivOES && glFramebufferRenderbufferOES &&
-           glFramebufferTexture2DOES && glCheckFramebufferStatusOES &&
-           glGetFramebufferAttachmentParameterivOES && glGenerateMipmapOES;
-}
+#include "fbo_functions.h"
 
 static void quad(float x0, float y0, float x1, float y1)
 {
@@ -621,8 +580,7 @@ int main(void)
 {
     ct_init(32, 32);
     CHECK(strstr((const char *)glGetString(GL_EXTENSIONS), "GL_OES_framebuffer_object") != NULL);
-    CHECK(load_functions());
-    if (!load_functions())
+    if (!ct_load_fbo())
         return ct_done();
     names_and_queries();
     render_to_renderbuffers();

@@ -5,19 +5,12 @@
  * rendering goes on afterwards is checked).
  */
 #include "common.h"
+#include "fbo_functions.h"
 
 /* Extension functions through eglGetProcAddress (Mesa exports them only that way). */
 static PFNGLMULTIDRAWARRAYSEXTPROC glMultiDrawArraysEXT;
 static PFNGLMULTIDRAWELEMENTSEXTPROC glMultiDrawElementsEXT;
 static PFNGLDISCARDFRAMEBUFFEREXTPROC glDiscardFramebufferEXT;
-static PFNGLGENFRAMEBUFFERSOESPROC glGenFramebuffersOES;
-static PFNGLGENRENDERBUFFERSOESPROC glGenRenderbuffersOES;
-static PFNGLBINDFRAMEBUFFEROESPROC glBindFramebufferOES;
-static PFNGLBINDRENDERBUFFEROESPROC glBindRenderbufferOES;
-static PFNGLRENDERBUFFERSTORAGEOESPROC glRenderbufferStorageOES;
-static PFNGLFRAMEBUFFERRENDERBUFFEROESPROC glFramebufferRenderbufferOES;
-static PFNGLDELETEFRAMEBUFFERSOESPROC glDeleteFramebuffersOES;
-static PFNGLDELETERENDERBUFFERSOESPROC glDeleteRenderbuffersOES;
 
 int main(void)
 {
@@ -36,15 +29,8 @@ int main(void)
     glMultiDrawArraysEXT = (PFNGLMULTIDRAWARRAYSEXTPROC)eglGetProcAddress("glMultiDrawArraysEXT");
     glMultiDrawElementsEXT = (PFNGLMULTIDRAWELEMENTSEXTPROC)eglGetProcAddress("glMultiDrawElementsEXT");
     glDiscardFramebufferEXT = (PFNGLDISCARDFRAMEBUFFEREXTPROC)eglGetProcAddress("glDiscardFramebufferEXT");
-    glGenFramebuffersOES = (PFNGLGENFRAMEBUFFERSOESPROC)eglGetProcAddress("glGenFramebuffersOES");
-    glGenRenderbuffersOES = (PFNGLGENRENDERBUFFERSOESPROC)eglGetProcAddress("glGenRenderbuffersOES");
-    glBindFramebufferOES = (PFNGLBINDFRAMEBUFFEROESPROC)eglGetProcAddress("glBindFramebufferOES");
-    glBindRenderbufferOES = (PFNGLBINDRENDERBUFFEROESPROC)eglGetProcAddress("glBindRenderbufferOES");
-    glRenderbufferStorageOES = (PFNGLRENDERBUFFERSTORAGEOESPROC)eglGetProcAddress("glRenderbufferStorageOES");
-    glFramebufferRenderbufferOES = (PFNGLFRAMEBUFFERRENDERBUFFEROESPROC)eglGetProcAddress("glFramebufferRenderbufferOES");
-    glDeleteFramebuffersOES = (PFNGLDELETEFRAMEBUFFERSOESPROC)eglGetProcAddress("glDeleteFramebuffersOES");
-    glDeleteRenderbuffersOES = (PFNGLDELETERENDERBUFFERSOESPROC)eglGetProcAddress("glDeleteRenderbuffersOES");
     CHECK(glMultiDrawArraysEXT && glMultiDrawElementsEXT && glDiscardFramebufferEXT);
+    ct_load_fbo();
     glEnableClientState(GL_VERTEX_ARRAY);
     glVertexPointer(2, GL_FLOAT, 0, verts);
     glClearColor(0, 0, 0, 0);

@@ -5,18 +5,8 @@
  * written by it limit a second one.
  */
 #include "common.h"
+#include "fbo_functions.h"
 
-/* Extension functions through eglGetProcAddress (Mesa exports them only that way). */
-static PFNGLGENFRAMEBUFFERSOESPROC glGenFramebuffersOES;
-static PFNGLGENRENDERBUFFERSOESPROC glGenRenderbuffersOES;
-static PFNGLBINDFRAMEBUFFEROESPROC glBindFramebufferOES;
-static PFNGLBINDRENDERBUFFEROESPROC glBindRenderbufferOES;
-static PFNGLRENDERBUFFERSTORAGEOESPROC glRenderbufferStorageOES;
-static PFNGLFRAMEBUFFERRENDERBUFFEROESPROC glFramebufferRenderbufferOES;
-static PFNGLDELETEFRAMEBUFFERSOESPROC glDeleteFramebuffersOES;
-static PFNGLDELETERENDERBUFFERSOESPROC glDeleteRenderbuffersOES;
-static PFNGLGETRENDERBUFFERPARAMETERIVOESPROC glGetRenderbufferParameterivOES;
-static PFNGLCHECKFRAMEBUFFERSTATUSOESPROC glCheckFramebufferStatusOES;
 
 static GLint rb_param(GLenum pname)
 {
@@ -43,20 +33,7 @@ int main(void)
     GLuint fb, rb[2];
 
     ct_init(8, 8);
-    glGenFramebuffersOES = (PFNGLGENFRAMEBUFFERSOESPROC)eglGetProcAddress("glGenFramebuffersOES");
-    glGenRenderbuffersOES = (PFNGLGENRENDERBUFFERSOESPROC)eglGetProcAddress("glGenRenderbuffersOES");
-    glBindFramebufferOES = (PFNGLBINDFRAMEBUFFEROESPROC)eglGetProcAddress("glBindFramebufferOES");
-    glBindRenderbufferOES = (PFNGLBINDRENDERBUFFEROESPROC)eglGetProcAddress("glBindRenderbufferOES");
-    glRenderbufferStorageOES = (PFNGLRENDERBUFFERSTORAGEOESPROC)eglGetProcAddress("glRenderbufferStorageOES");
-    glFramebufferRenderbufferOES = (PFNGLFRAMEBUFFERRENDERBUFFEROESPROC)eglGetProcAddress("glFramebufferRenderbufferOES");
-    glDeleteFramebuffersOES = (PFNGLDELETEFRAMEBUFFERSOESPROC)eglGetProcAddress("glDeleteFramebuffersOES");
-    glDeleteRenderbuffersOES = (PFNGLDELETERENDERBUFFERSOESPROC)eglGetProcAddress("glDeleteRenderbuffersOES");
-    glGetRenderbufferParameterivOES = (PFNGLGETRENDERBUFFERPARAMETERIVOESPROC)eglGetProcAddress("glGetRenderbufferParameterivOES");
-    glCheckFramebufferStatusOES = (PFNGLCHECKFRAMEBUFFERSTATUSOESPROC)eglGetProcAddress("glCheckFramebufferStatusOES");
-    CHECK(glGenFramebuffersOES && glGenRenderbuffersOES && glBindFramebufferOES &&
-          glBindRenderbufferOES && glRenderbufferStorageOES && glFramebufferRenderbufferOES &&
-          glDeleteFramebuffersOES && glDeleteRenderbuffersOES &&
-          glGetRenderbufferParameterivOES && glCheckFramebufferStatusOES);
+    ct_load_fbo();
     CHECK(strstr((const char *)glGetString(GL_EXTENSIONS), "GL_OES_packed_depth_stencil") !=
           NULL);
     if (!glCheckFramebufferStatusOES)

@@ -6,18 +6,8 @@
  * unsupported (it only pairs them packed), which the extension allows.
  */
 #include "common.h"
+#include "fbo_functions.h"
 
-/* Extension functions through eglGetProcAddress (Mesa exports them only that way). */
-static PFNGLGENFRAMEBUFFERSOESPROC glGenFramebuffersOES;
-static PFNGLGENRENDERBUFFERSOESPROC glGenRenderbuffersOES;
-static PFNGLBINDFRAMEBUFFEROESPROC glBindFramebufferOES;
-static PFNGLBINDRENDERBUFFEROESPROC glBindRenderbufferOES;
-static PFNGLRENDERBUFFERSTORAGEOESPROC glRenderbufferStorageOES;
-static PFNGLFRAMEBUFFERRENDERBUFFEROESPROC glFramebufferRenderbufferOES;
-static PFNGLDELETEFRAMEBUFFERSOESPROC glDeleteFramebuffersOES;
-static PFNGLDELETERENDERBUFFERSOESPROC glDeleteRenderbuffersOES;
-static PFNGLGETRENDERBUFFERPARAMETERIVOESPROC glGetRenderbufferParameterivOES;
-static PFNGLCHECKFRAMEBUFFERSTATUSOESPROC glCheckFramebufferStatusOES;
 
 static int has_extension(const char *name)
 {
@@ -47,17 +37,7 @@ int main(void)
     int k;
 
     ct_init(8, 8);
-    glGenFramebuffersOES = (PFNGLGENFRAMEBUFFERSOESPROC)eglGetProcAddress("glGenFramebuffersOES");
-    glGenRenderbuffersOES = (PFNGLGENRENDERBUFFERSOESPROC)eglGetProcAddress("glGenRenderbuffersOES");
-    glBindFramebufferOES = (PFNGLBINDFRAMEBUFFEROESPROC)eglGetProcAddress("glBindFramebufferOES");
-    glBindRenderbufferOES = (PFNGLBINDRENDERBUFFEROESPROC)eglGetProcAddress("glBindRenderbufferOES");
-    glRenderbufferStorageOES = (PFNGLRENDERBUFFERSTORAGEOESPROC)eglGetProcAddress("glRenderbufferStorageOES");
-    glFramebufferRenderbufferOES = (PFNGLFRAMEBUFFERRENDERBUFFEROESPROC)eglGetProcAddress("glFramebufferRenderbufferOES");
-    glDeleteFramebuffersOES = (PFNGLDELETEFRAMEBUFFERSOESPROC)eglGetProcAddress("glDeleteFramebuffersOES");
-    glDeleteRenderbuffersOES = (PFNGLDELETERENDERBUFFERSOESPROC)eglGetProcAddress("glDeleteRenderbuffersOES");
-    glGetRenderbufferParameterivOES = (PFNGLGETRENDERBUFFERPARAMETERIVOESPROC)eglGetProcAddress("glGetRenderbufferParameterivOES");
-    glCheckFramebufferStatusOES = (PFNGLCHECKFRAMEBUFFERSTATUSOESPROC)eglGetProcAddress("glCheckFramebufferStatusOES");
-    CHECK(glGenFramebuffersOES && glGenRenderbuffersOES && glBindFramebufferOES);
+    ct_load_fbo();
     CHECK(has_extension("GL_OES_rgb8_rgba8"));
     CHECK(has_extension("GL_OES_depth24"));
     CHECK(has_extension("GL_OES_stencil8"));
