@@ -59,6 +59,15 @@ static void fill_words(GLubyte *data, int bytes, const GLubyte word[8])
         data[i] = word[i % 8];
 }
 
+/* A level of `w` × `h` (32 bytes) of PVRTC `format` made of copies of `word`, drawn. */
+static void uniform_pvrtc(GLenum format, int w, int h, const GLubyte word[8])
+{
+    GLubyte data[32];
+    fill_words(data, 32, word);
+    glCompressedTexImage2D(GL_TEXTURE_2D, 0, format, w, h, 0, 32, data);
+    draw(w, h);
+}
+
 static void pvrtc(void)
 {
     GLubyte word[8], data[64];
@@ -66,42 +75,28 @@ static void pvrtc(void)
     /* 8 × 8 at 4 bpp: 2 × 2 words, 32 bytes. A white, B red, every pixel modulated
      * fully to B: red. Weight 3 (01): floor((255·5 + 0·3)/8) = 159 in green and blue. */
     pvrtc_word(word, 31, 31, 15, 31, 0, 0, 0, 0xFFFFFFFFul);
-    fill_words(data, 32, word);
-    glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG, 8, 8, 0, 32,
-                           data);
+    uniform_pvrtc(GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG, 8, 8, word);
     CHECK_GL(GL_NO_ERROR);
-    draw(8, 8);
     CHECK_PIXEL(0, 0, 255, 0, 0, 255, 0);
     CHECK_PIXEL(7, 7, 255, 0, 0, 255, 0);
     ct_save("pvrtc4_red");
     pvrtc_word(word, 31, 31, 15, 31, 0, 0, 0, 0x55555555ul);
-    fill_words(data, 32, word);
-    glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG, 8, 8, 0, 32,
-                           data);
-    draw(8, 8);
+    uniform_pvrtc(GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG, 8, 8, word);
     CHECK_PIXEL(3, 4, 255, 159, 159, 255, 0);
 
     /* Punch-through (flag 1, bits 10): half of A and B, alpha 0; the RGB format keeps
      * alpha 1. */
     pvrtc_word(word, 31, 31, 15, 0, 0, 0, 1, 0xAAAAAAAAul);
-    fill_words(data, 32, word);
-    glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG, 8, 8, 0, 32,
-                           data);
-    draw(8, 8);
+    uniform_pvrtc(GL_COMPRESSED_RGBA_PVRTC_4BPPV1_IMG, 8, 8, word);
     CHECK_PIXEL(2, 2, 127, 127, 127, 0, 0);
-    glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_PVRTC_4BPPV1_IMG, 8, 8, 0, 32,
-                           data);
-    draw(8, 8);
+    uniform_pvrtc(GL_COMPRESSED_RGB_PVRTC_4BPPV1_IMG, 8, 8, word);
     CHECK_PIXEL(2, 2, 127, 127, 127, 255, 0);
 
     /* 2 bpp, 16 × 8, direct modulation: bit 1 of each word's first row selects B for
      * pixel 1 of that row. */
     pvrtc_word(word, 0, 0, 0, 31, 31, 31, 0, 0x2ul);
-    fill_words(data, 32, word);
-    glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_PVRTC_2BPPV1_IMG, 16, 8, 0, 32,
-                           data);
+    uniform_pvrtc(GL_COMPRESSED_RGB_PVRTC_2BPPV1_IMG, 16, 8, word);
     CHECK_GL(GL_NO_ERROR);
-    draw(16, 8);
     CHECK_PIXEL(0, 0, 0, 0, 0, 255, 0);
     CHECK_PIXEL(1, 0, 255, 255, 255, 255, 0);
     CHECK_PIXEL(9, 4, 255, 255, 255, 255, 0);
