@@ -97,6 +97,7 @@ int main(void)
     GLubyte etc1[16];
     GLuint tex[3];
     int i, j, c;
+    GLenum e;
     const char *ext;
 
     ct_init(VW, VH);
@@ -192,11 +193,13 @@ int main(void)
     memset(palette4, 0, sizeof palette4); /* 16 RGB8 entries, then ⌈3·3/2⌉ index bytes */
     glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_PALETTE4_RGB8_OES, 3, 3, 0,
                            (GLsizei)sizeof palette4, palette4);
-    CHECK_GL(GL_NO_ERROR);
+    e = glGetError();
+    CHECK_MESA_DEVIATES(e == GL_NO_ERROR, "Mesa: GL_OUT_OF_MEMORY for a 3 x 3 paletted image");
     memset(etc1, 0, sizeof etc1); /* 3 × 5: one block across, two down */
     glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_ETC1_RGB8_OES, 3, 5, 0, (GLsizei)sizeof etc1,
                            etc1);
-    CHECK_GL(GL_NO_ERROR);
+    e = glGetError();
+    CHECK_MESA_DEVIATES(e == GL_NO_ERROR, "Mesa: GL_OUT_OF_MEMORY for a 3 x 5 ETC1 image");
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, -3, 5, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
     CHECK_GL(GL_INVALID_VALUE);
     if (ct_strict()) {
