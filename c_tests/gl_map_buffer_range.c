@@ -106,6 +106,10 @@ int main(void)
      * bits, which Mesa judges by their own rules). */
     CHECK(map(0, 4, GL_MAP_READ_BIT_EXT | 0x1000) == NULL);
     CHECK_GL(GL_INVALID_VALUE);
+    if (ct_strict()) {
+        CHECK(map(0, 4, GL_MAP_READ_BIT_EXT | 0x40) == NULL);
+        CHECK_GL(GL_INVALID_VALUE);
+    }
     CHECK(map(0, 4, 0) == NULL);
     CHECK_GL(GL_INVALID_OPERATION);
     CHECK(map(0, 0, GL_MAP_READ_BIT_EXT) == NULL);
