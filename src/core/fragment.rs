@@ -406,11 +406,11 @@ impl<'a> SpanTex<'a> {
     /// fragment whose primary color is `primary`.
     #[inline]
     fn apply(&mut self, i: usize, primary: [f32; 4]) -> [f32; 4] {
-        let mut c = primary;
         let stage = self.stage;
         if stage.crossbar {
             return self.apply_crossbar(i, primary);
         }
+        let mut c = primary;
         for (n, (_, unit)) in stage.units.iter().enumerate() {
             let texel = self.texel(n, i);
             c = texenv::apply(&unit.env, unit.sampler.format, texel, c, primary);
@@ -444,7 +444,7 @@ impl<'a> SpanTex<'a> {
             return self.spans[n].cube(faces, i);
         }
         let (s, t) = self.spans[n].st(i);
-        if self.stage.anisotropic && unit.sampler.max_anisotropy > 1.0 {
+        if unit.sampler.max_anisotropy > 1.0 {
             return self.spans[n].anisotropic(&unit.sampler, i, s, t);
         }
         let lambda = self.lambda_at(n, i, s, t);

@@ -634,73 +634,6 @@ pub fn query_api() -> EGLenum {
     thread::api()
 }
 
-#[cfg(test)]
-mod tests {
-    //! The display is process-wide, so everything runs in one test, in order.
-    use super::*;
-
-    fn pbuffer(cfg: usize, w: EGLint, h: EGLint) -> usize {
-        create_pbuffer(DISPLAY_HANDLE, cfg, &[(EGL_WIDTH, w), (EGL_HEIGHT, h)]).unwrap()
-    }
-
-    #[test]
-    fn display_lifecycle_and_errors() {
-        let d = get_display(0);
-        assert_eq!(d, DISPLAY_HANDLE);
-        assert_eq!(initialize(2), Err(EGL_BAD_DISPLAY));
-        assert_eq!(initialize(d), Ok((1, 5)));
-        assert_eq!(query_string(d, 0x1234), Err(EGL_BAD_PARAMETER));
-        assert_eq!(query_string(d, EGL_CLIENT_APIS), Ok(CLIENT_APIS));
-        assert_eq!(get_configs(d).unwrap().len(), 18);
-        assert_eq!(get_config_attrib(d, 19, EGL_RED_SIZE), Err(EGL_BAD_CONFIG));
-        assert_eq!(get_config_attrib(d, 1, 0x1234), Err(EGL_BAD_ATTRIBUTE));
-
-        let s1 = pbuffer(1, 4, 4);
-        let s2 = pbuffer(2, 4, 4);
-        let c1 = create_context(d, 1, 0, &[]).unwrap();
-        assert_eq!(create_context(d, 1, 12345, &[]), Err(EGL_BAD_CONTEXT));
-        assert_eq!(create_context(d, 99, 0, &[]), Err(EGL_BAD_CONFIG));
-        let c2 = create_context(d, 1, c1, &[]).unwrap();
-
-        // Errors leave the binding as it was.
-        assert_eq!(make_current(d, s1, s1, 777), Err(EGL_BAD_CONTEXT));
-        assert_eq!(make_current(d, 777, s1, c1), Err(EGL_BAD_SURFACE));
-        assert_eq!(make_current(d, s1, s1, 0), Err(EGL_BAD_MATCH));
-        assert_eq!(make_current(d, 0, 0, c1), Err(EGL_BAD_MATCH));
-        assert_eq!(make_current(d, s2, s2, c1), Err(EGL_BAD_MATCH));
-        assert_eq!(current_context(), 0);
-
-        make_current(d, s1, s1, c1).unwrap();
-        assert_eq!(current_context(), c1);
-        assert_eq!(current_surface(EGL_DRAW), Ok(s1));
-        assert_eq!(query_context(d, c1, EGL_RENDER_BUFFER), Ok(EGL_BACK_BUFFER));
-        assert_eq!(query_context(d, c2, EGL_RENDER_BUFFER), Ok(EGL_NONE));
-
-        // Another thread cannot take c1 or s1.
-        let t = std::thread::spawn(move || make_current(d, s1, s1, c2));
-        assert_eq!(t.join().unwrap(), Err(EGL_BAD_ACCESS));
-
-        // Destroying while current defers deletion but invalidates the handle.
-        destroy_surface(d, s1).unwrap();
-        assert_eq!(query_surface(d, s1, EGL_WIDTH), Err(EGL_BAD_SURFACE));
-        assert_eq!(current_surface(EGL_DRAW), Ok(s1));
-        assert_eq!(wait_client(), Err(EGL_BAD_CURRENT_SURFACE));
-        make_current(d, 0, 0, 0).unwrap();
-        assert_eq!(current_context(), 0);
-
-        assert_eq!(swap_buffers(d, s2), Err(EGL_BAD_SURFACE));
-        terminate(d).unwrap();
-        assert_eq!(
-            query_context(d, c1, EGL_CONFIG_ID),
-            Err(EGL_NOT_INITIALIZED)
-        );
-        initialize(d).unwrap();
-        assert_eq!(query_context(d, c1, EGL_CONFIG_ID), Err(EGL_BAD_CONTEXT));
-        assert_eq!(destroy_surface(d, s2), Err(EGL_BAD_SURFACE));
-        terminate(d).unwrap();
-    }
-}
-
 /// A fence sync: signaled once every command its context had issued before it completes.
 /// Rendering is deferred until a flush, so the fence is kept unsignaled and completed (the
 /// context finished) the first time anyone looks at it: a status query, a client wait or
@@ -874,5 +807,72 @@ pub fn destroy_image(dpy: usize, image: usize) -> EglResult<()> {
         Ok(())
     } else {
         Err(EGL_BAD_PARAMETER)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The display is process-wide, so everything runs in one test, in order.
+    use super::*;
+
+    fn pbuffer(cfg: usize, w: EGLint, h: EGLint) -> usize {
+        create_pbuffer(DISPLAY_HANDLE, cfg, &[(EGL_WIDTH, w), (EGL_HEIGHT, h)]).unwrap()
+    }
+
+    #[test]
+    fn display_lifecycle_and_errors() {
+        let d = get_display(0);
+        assert_eq!(d, DISPLAY_HANDLE);
+        assert_eq!(initialize(2), Err(EGL_BAD_DISPLAY));
+        assert_eq!(initialize(d), Ok((1, 5)));
+        assert_eq!(query_string(d, 0x1234), Err(EGL_BAD_PARAMETER));
+        assert_eq!(query_string(d, EGL_CLIENT_APIS), Ok(CLIENT_APIS));
+        assert_eq!(get_configs(d).unwrap().len(), 18);
+        assert_eq!(get_config_attrib(d, 19, EGL_RED_SIZE), Err(EGL_BAD_CONFIG));
+        assert_eq!(get_config_attrib(d, 1, 0x1234), Err(EGL_BAD_ATTRIBUTE));
+
+        let s1 = pbuffer(1, 4, 4);
+        let s2 = pbuffer(2, 4, 4);
+        let c1 = create_context(d, 1, 0, &[]).unwrap();
+        assert_eq!(create_context(d, 1, 12345, &[]), Err(EGL_BAD_CONTEXT));
+        assert_eq!(create_context(d, 99, 0, &[]), Err(EGL_BAD_CONFIG));
+        let c2 = create_context(d, 1, c1, &[]).unwrap();
+
+        // Errors leave the binding as it was.
+        assert_eq!(make_current(d, s1, s1, 777), Err(EGL_BAD_CONTEXT));
+        assert_eq!(make_current(d, 777, s1, c1), Err(EGL_BAD_SURFACE));
+        assert_eq!(make_current(d, s1, s1, 0), Err(EGL_BAD_MATCH));
+        assert_eq!(make_current(d, 0, 0, c1), Err(EGL_BAD_MATCH));
+        assert_eq!(make_current(d, s2, s2, c1), Err(EGL_BAD_MATCH));
+        assert_eq!(current_context(), 0);
+
+        make_current(d, s1, s1, c1).unwrap();
+        assert_eq!(current_context(), c1);
+        assert_eq!(current_surface(EGL_DRAW), Ok(s1));
+        assert_eq!(query_context(d, c1, EGL_RENDER_BUFFER), Ok(EGL_BACK_BUFFER));
+        assert_eq!(query_context(d, c2, EGL_RENDER_BUFFER), Ok(EGL_NONE));
+
+        // Another thread cannot take c1 or s1.
+        let t = std::thread::spawn(move || make_current(d, s1, s1, c2));
+        assert_eq!(t.join().unwrap(), Err(EGL_BAD_ACCESS));
+
+        // Destroying while current defers deletion but invalidates the handle.
+        destroy_surface(d, s1).unwrap();
+        assert_eq!(query_surface(d, s1, EGL_WIDTH), Err(EGL_BAD_SURFACE));
+        assert_eq!(current_surface(EGL_DRAW), Ok(s1));
+        assert_eq!(wait_client(), Err(EGL_BAD_CURRENT_SURFACE));
+        make_current(d, 0, 0, 0).unwrap();
+        assert_eq!(current_context(), 0);
+
+        assert_eq!(swap_buffers(d, s2), Err(EGL_BAD_SURFACE));
+        terminate(d).unwrap();
+        assert_eq!(
+            query_context(d, c1, EGL_CONFIG_ID),
+            Err(EGL_NOT_INITIALIZED)
+        );
+        initialize(d).unwrap();
+        assert_eq!(query_context(d, c1, EGL_CONFIG_ID), Err(EGL_BAD_CONTEXT));
+        assert_eq!(destroy_surface(d, s2), Err(EGL_BAD_SURFACE));
+        terminate(d).unwrap();
     }
 }
