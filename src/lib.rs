@@ -1,4 +1,4 @@
-//! A drop-in OpenGL ES 1.1 Common + EGL 1.4 library with a C ABI, and an M3G 1.1 API in Rust,
+//! A drop-in OpenGL ES 1.1 Common + EGL 1.5 library with a C ABI, and an M3G 1.1 API in Rust,
 //! both backed by one software rasterizer (`core`).
 #![allow(non_snake_case)]
 

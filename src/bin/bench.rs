@@ -1210,7 +1210,11 @@ impl Report<'_> {
              Images in {}. Total {:.0} s.",
             self.frames,
             frames.iter().min().copied().unwrap_or(0),
-            self.out_dir.display(),
+            // Relative to the repository, so the committed report names no machine's path.
+            self.out_dir
+                .strip_prefix(env!("CARGO_MANIFEST_DIR"))
+                .unwrap_or(&self.out_dir)
+                .display(),
             self.wall
         ));
         v

@@ -1,13 +1,14 @@
-//! Per-fragment operations, in the specification's order (ES 1.1 chapter 4): [texturing and
-//! fog arrive here with the texturing work], alpha test, stencil test, depth test, blending,
-//! dither, logic op, and the masked write. The scissor test is applied earlier, by clipping
+//! Per-fragment operations, in the specification's order (ES 1.1 chapters 3.7-4): texturing
+//! and fog, alpha test, stencil test, depth test, blending, dither, logic op, and the masked
+//! write. The scissor test is applied earlier, by clipping
 //! every primitive's pixels to the scissor box.
 //!
 //! A [`FragmentKey`] is derived from the state once per draw call. It picks a span routine:
 //! the common keys (no alpha test, stencil or logic op; any color format, dithered or not)
 //! run a routine specialized at compile time on whether depth is tested, whether color is
-//! interpolated and whether it is blended, so a disabled feature costs nothing per pixel;
-//! every other key runs the general routine, which tests each feature per pixel.
+//! interpolated and whether it is blended (`simple`), or, textured, on the filter as well
+//! (`textured`), so a disabled feature costs nothing per pixel; keys that write nothing run
+//! none; every other key runs the general routine, which tests each feature per pixel.
 //!
 //! Multisample operations (`GL_SAMPLE_COVERAGE`, `GL_SAMPLE_ALPHA_TO_COVERAGE`,
 //! `GL_SAMPLE_ALPHA_TO_ONE`) are skipped: every config has `EGL_SAMPLE_BUFFERS` 0, and the

@@ -1,7 +1,7 @@
 //! The rendering core: plain Rust, no FFI types. Both faces of the library, the GL/EGL state
 //! machines and the M3G scene graph, describe what to draw as a [`RenderState`] plus a
 //! [`DrawCall`] and hand it to [`render`], which runs
-//! vertex → clip → setup → raster → fragment into a [`Target`].
+//! vertex → clip → setup → bin → raster → fragment into a [`Target`].
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;

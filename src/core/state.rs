@@ -220,8 +220,8 @@ pub enum Quality {
     /// Documented shortcuts: colors and texture coordinates divided by w exactly only
     /// every [`crate::core::fragment::PERSPECTIVE_STEP`] pixels and interpolated linearly
     /// in between; 2 × 2 coverage samples for antialiased points and lines. As the
-    /// perspective hint (which governs the fragment stage's precision), also: one λ per
-    /// span, and blending on narrow color formats reads the destination with a reciprocal
+    /// perspective hint (which governs the fragment stage's precision), also: λ exact every
+    /// `PERSPECTIVE_STEP` pixels and interpolated between, and blending on narrow color formats reads the destination with a reciprocal
     /// multiply instead of a division (at most 1 ulp off, so within 2 steps of DONT_CARE).
     Fastest,
     /// The default: exact perspective, 4 × 4 coverage samples.

@@ -533,9 +533,10 @@ impl ClipVertex {
     }
 }
 
-/// Transformed vertices of one draw call, addressed by vertex number. This is the
-/// post-transform vertex cache: every distinct vertex number a draw uses is transformed and
-/// lit exactly once, however often its primitives refer to it.
+/// Transformed vertices of one piece of a draw call (up to 2048 primitives), addressed by
+/// vertex number. This is the post-transform vertex cache: every distinct vertex number a
+/// piece uses is transformed and lit once, however often its primitives refer to it (a
+/// vertex shared by two pieces is transformed in each).
 pub struct Vertices {
     list: Vec<ClipVertex>,
     map: VertexMap,

@@ -1,6 +1,6 @@
 //! EGLImages as the GL sees them (`OES_EGL_image`): EGL creates and destroys them
 //! (`egl::display`), and `glEGLImageTarget*OES` read them by handle. The table lives here,
-//! below EGL, so that the layers keep depending one way (egl → gles → core).
+//! below EGL, so that GL looks images up without calling into EGL.
 //!
 //! An image is the texel contents of its source at creation: a GL object made from it gets
 //! a copy, so later changes to one sibling are not seen by the others (CONFORMANCE.md).

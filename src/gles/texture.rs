@@ -7,9 +7,10 @@
 //! texture) belongs to each context. A name deleted in another context of the share group
 //! while bound here is recreated, empty, the next time this context uses the binding.
 //!
-//! Flush points (ARCHITECTURE decision 5): every change to a texture's images or parameters
-//! first completes the rendering this context has recorded, since recorded work may sample
-//! it. [`Texture::version`] changes with each change, for caches that want to notice.
+//! Flush points (ARCHITECTURE decision 5): recorded draws hold snapshots of the images they
+//! sample, so changing a texture needs no flush; only while a framebuffer object is bound,
+//! whose attachment may be that texture, does a change first complete the recorded work.
+//! [`Texture::version`] changes with each change, for caches that want to notice.
 
 use crate::core::fixed;
 use crate::core::texture::pvrtc::PvrtcFormat;
