@@ -1213,7 +1213,7 @@ impl Report<'_> {
             // Relative to the repository, so the committed report names no machine's path.
             self.out_dir
                 .strip_prefix(env!("CARGO_MANIFEST_DIR"))
-                .unwrap_or(self.out_dir.as_path())
+                .unwrap_or(self.out_dir)
                 .display(),
             self.wall
         ));
