@@ -158,6 +158,7 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_EXT_polygon_offset_clamp",
     "GL_OES_required_internalformat",
     "GL_OES_packed_depth_stencil",
+    "GL_KHR_debug",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
@@ -179,7 +180,7 @@ impl Context {
             GL_VERSION => VERSION,
             GL_EXTENSIONS => extensions(),
             _ => {
-                self.set_error(GL_INVALID_ENUM);
+                self.bad_enum("name", name);
                 return None;
             }
         })
@@ -202,6 +203,7 @@ impl Context {
             .or_else(|| self.buffer_value(pname))
             .or_else(|| self.fbo_value(pname))
             .or_else(|| self.vertex_array_value(pname))
+            .or_else(|| self.debug_value(pname))
         {
             return Some(v);
         }
