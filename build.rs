@@ -194,6 +194,22 @@ const GL_EXTENSION_FUNCTIONS: &[(&str, &[&str])] = &[
             "glIsVertexArrayOES",
         ],
     ),
+    (
+        "GL_KHR_debug",
+        &[
+            "glDebugMessageControlKHR",
+            "glDebugMessageInsertKHR",
+            "glDebugMessageCallbackKHR",
+            "glGetDebugMessageLogKHR",
+            "glPushDebugGroupKHR",
+            "glPopDebugGroupKHR",
+            "glObjectLabelKHR",
+            "glGetObjectLabelKHR",
+            "glObjectPtrLabelKHR",
+            "glGetObjectPtrLabelKHR",
+            "glGetPointervKHR",
+        ],
+    ),
 ];
 
 /// EGL 1.5 functions by the version that introduced them.

@@ -84,10 +84,11 @@ impl Context {
         request: Request,
         share: Option<&Context>,
     ) -> Context {
-        let gl = match share {
+        let mut gl = match share {
             Some(s) => crate::gles::Context::new(Some(&current::lock(&s.gl))),
             None => crate::gles::Context::new(None),
         };
+        gl.set_debug_context(request.debug);
         Context {
             id,
             config,

@@ -151,7 +151,7 @@ impl Context {
             ArrayKind::Weight => (&[1, 2, 3, 4][..MAX_VERTEX_UNITS], &[GL_FIXED, GL_FLOAT]),
         };
         if !types.contains(&ty) {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("type", ty);
         }
         if !sizes.contains(&size) || stride < 0 {
             return self.set_error(GL_INVALID_VALUE);
@@ -182,7 +182,7 @@ impl Context {
             GL_POINT_SIZE_ARRAY_OES => &mut self.arrays.point_size,
             GL_MATRIX_INDEX_ARRAY_OES => &mut self.arrays.matrix_index,
             GL_WEIGHT_ARRAY_OES => &mut self.arrays.weight,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("array", array),
         };
         a.enabled = on;
     }
@@ -196,10 +196,14 @@ impl Context {
 
     pub fn draw_arrays(&mut self, mode: GLenum, first: i32, count: i32) {
         let Some(prim) = primitive(mode) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("mode", mode);
         };
         if first < 0 || count < 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value(
+                if first < 0 { "first" } else { "count" },
+                first.min(count) as i64,
+                "first and count must not be negative",
+            );
         }
         self.draw(
             prim,
@@ -214,7 +218,7 @@ impl Context {
     /// index pointer into a slice of exactly `count` elements.
     pub fn draw_elements(&mut self, mode: GLenum, indices: Indices<'_>) {
         let Some(prim) = primitive(mode) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("mode", mode);
         };
         self.draw(prim, indices);
     }
@@ -338,7 +342,7 @@ impl Context {
         offset: usize,
     ) {
         let Some(prim) = primitive(mode) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("mode", mode);
         };
         let bytes = {
             let objects = lock_objects(&self.shared);

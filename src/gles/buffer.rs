@@ -80,7 +80,7 @@ impl Context {
             GL_ARRAY_BUFFER => Some(&mut self.buffers.array),
             GL_ELEMENT_ARRAY_BUFFER => Some(&mut self.buffers.element_array),
             _ => {
-                self.set_error(GL_INVALID_ENUM);
+                self.bad_enum("target", target);
                 None
             }
         }
@@ -92,7 +92,7 @@ impl Context {
 
     pub fn gen_buffers(&mut self, n: i32) -> Vec<GLuint> {
         if n < 0 {
-            self.set_error(GL_INVALID_VALUE);
+            self.bad_value("n", n as i64, "n must not be negative");
             return Vec::new();
         }
         let mut o = self.objects();
@@ -105,8 +105,9 @@ impl Context {
     /// contexts that have it bound keep it (see [`super::objects`]).
     pub fn delete_buffers(&mut self, n: i32, names: &[GLuint]) {
         if n < 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value("n", n as i64, "n must not be negative");
         }
+        self.forget_labels(super::tokens_ext::GL_BUFFER_KHR, names);
         let shared = self.shared.clone();
         let mut o = lock_objects(&shared);
         for &name in names {
@@ -144,7 +145,7 @@ impl Context {
     fn bound_buffer(&mut self, target: GLenum) -> Option<Binding> {
         let b = self.binding(target)?.clone();
         if b.is_none() {
-            self.set_error(GL_INVALID_OPERATION);
+            self.bad_operation("no buffer object is bound to target (name 0 is bound)");
             return None;
         }
         Some(b)
@@ -153,14 +154,14 @@ impl Context {
     /// `glBufferData`: `data` is `None` for a null pointer (the store is then zeroed).
     pub fn buffer_data(&mut self, target: GLenum, size: isize, data: Option<&[u8]>, usage: GLenum) {
         if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         }
         // ES 1.1 has only the static and dynamic hints (no STREAM_DRAW).
         if !matches!(usage, GL_STATIC_DRAW | GL_DYNAMIC_DRAW) {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("usage", usage);
         }
         if size < 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value("size", size as i64, "size must not be negative");
         }
         let Some(bound) = self.bound_buffer(target) else {
             return;
@@ -185,7 +186,7 @@ impl Context {
     /// buffer must not be mapped (`GL_INVALID_OPERATION`).
     pub fn buffer_sub_data(&mut self, target: GLenum, offset: isize, data: &[u8]) {
         if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         }
         let Some(bound) = self.bound_buffer(target) else {
             return;
@@ -195,11 +196,15 @@ impl Context {
         let end = (offset as usize).checked_add(data.len());
         if offset < 0 || end.is_none_or(|e| e > b.data.len()) {
             drop(o);
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value(
+                "offset",
+                offset as i64,
+                "offset + size must lie within the buffer's store",
+            );
         }
         if b.mapped {
             drop(o);
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation("the buffer is mapped; unmap it first");
         }
         b.data[offset as usize..][..data.len()].copy_from_slice(data);
     }
@@ -207,14 +212,14 @@ impl Context {
     /// `glGetBufferParameteriv`.
     pub fn buffer_parameter(&mut self, target: GLenum, pname: GLenum) -> Option<GLint> {
         if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("target", target);
             return None;
         }
         if !matches!(
             pname,
             GL_BUFFER_SIZE | GL_BUFFER_USAGE | GL_BUFFER_ACCESS_OES | GL_BUFFER_MAPPED_OES
         ) {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("pname", pname);
             return None;
         }
         let bound = self.bound_buffer(target)?;
@@ -242,7 +247,7 @@ impl Context {
         let b = o.buffers.get_mut(&bound).expect("bound objects live");
         if b.mapped {
             drop(o);
-            self.set_error(GL_INVALID_OPERATION);
+            self.bad_operation("the buffer is already mapped");
             return None;
         }
         b.mapped = true;
@@ -262,7 +267,7 @@ impl Context {
         access: GLbitfield,
     ) -> Option<*mut u8> {
         if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("target", target);
             return None;
         }
         let read = access & GL_MAP_READ_BIT_EXT != 0;
@@ -308,7 +313,7 @@ impl Context {
     /// (a range within the mapping, a mapping made with `GL_MAP_FLUSH_EXPLICIT_BIT_EXT`).
     pub fn flush_mapped_buffer_range(&mut self, target: GLenum, offset: isize, length: isize) {
         if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         }
         if offset < 0 || length < 0 {
             return self.set_error(GL_INVALID_VALUE);
@@ -334,7 +339,7 @@ impl Context {
     /// `glUnmapBufferOES`: true unless the buffer was not mapped (`GL_INVALID_OPERATION`).
     pub fn unmap_buffer(&mut self, target: GLenum) -> bool {
         if !matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER) {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("target", target);
             return false;
         }
         let Some(bound) = self.bound_buffer(target) else {
@@ -344,7 +349,7 @@ impl Context {
         let b = o.buffers.get_mut(&bound).expect("bound objects live");
         if !b.mapped {
             drop(o);
-            self.set_error(GL_INVALID_OPERATION);
+            self.bad_operation("the buffer is not mapped");
             return false;
         }
         b.mapped = false;

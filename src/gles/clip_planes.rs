@@ -27,7 +27,7 @@ impl Context {
     /// coordinates, multiplied by the inverse of the modelview matrix current now.
     pub fn clip_plane(&mut self, plane: GLenum, equation: [f32; 4]) {
         let Some(i) = plane_index(plane) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("plane", plane);
         };
         let mv = *self.modelview.last().expect("stack never empty");
         // (p1 p2 p3 p4) M⁻¹ as a row vector is (M⁻¹)ᵀ applied to the column vector.
@@ -40,7 +40,7 @@ impl Context {
         match plane_index(plane) {
             Some(i) => Some(self.clip_planes.planes[i]),
             None => {
-                self.set_error(GL_INVALID_ENUM);
+                self.bad_enum("plane", plane);
                 None
             }
         }

@@ -41,6 +41,8 @@ pub struct SharedObjects {
     pub buffers: super::buffer::BufferNames,
     /// `OES_framebuffer_object` renderbuffers (framebuffer objects are per context).
     pub renderbuffers: super::fbo::RenderbufferNames,
+    /// `KHR_debug` labels of buffers, textures and renderbuffers, by namespace and name.
+    pub labels: std::collections::HashMap<(GLenum, GLuint), String>,
 }
 
 pub const MAX_TEXTURE_UNITS: usize = crate::core::TEXTURE_UNITS;
@@ -154,6 +156,10 @@ pub struct Context {
     /// Set on the first `make_current`: the viewport and scissor start at the surface size.
     pub(super) initialized: bool,
     pub(super) error: GLenum,
+    /// The entry point running now (set at the C boundary), for debug messages.
+    pub(crate) call: &'static str,
+    /// `KHR_debug` state.
+    pub(crate) debug: super::debug::Debug,
 
     pub(super) enables: Enables,
     pub(super) matrix_mode: MatrixMode,
@@ -210,6 +216,8 @@ impl Context {
             read: None,
             initialized: false,
             error: GL_NO_ERROR,
+            call: "gl",
+            debug: Default::default(),
             enables: Enables {
                 dither: true,
                 multisample: true,
@@ -347,10 +355,15 @@ impl Context {
     }
 
     /// Records `e` unless an earlier error is still unread (the first error sticks).
+    /// A debug context (EGL's request): `GL_DEBUG_OUTPUT_KHR` starts enabled.
+    pub fn set_debug_context(&mut self, debug: bool) {
+        self.debug.output = debug;
+    }
+
+    /// Records error `e` (a debug message names the call and the error; [`Context::fail`]
+    /// says more).
     pub fn set_error(&mut self, e: GLenum) {
-        if self.error == GL_NO_ERROR {
-            self.error = e;
-        }
+        self.raise(e, None);
     }
 
     /// Returns and clears the recorded error.

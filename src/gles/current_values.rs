@@ -38,7 +38,7 @@ impl Context {
     pub fn multi_tex_coord(&mut self, target: GLenum, st: [f32; 4]) {
         match texture_unit(target) {
             Some(u) => self.current.texcoord[u] = st,
-            None => self.set_error(GL_INVALID_ENUM),
+            None => self.bad_enum("target", target),
         }
     }
 
@@ -46,7 +46,7 @@ impl Context {
     pub fn active_texture(&mut self, texture: GLenum) {
         match texture_unit(texture) {
             Some(u) => self.active_texture = u,
-            None => self.set_error(GL_INVALID_ENUM),
+            None => self.bad_enum("texture", texture),
         }
     }
 
@@ -55,13 +55,16 @@ impl Context {
     pub fn client_active_texture(&mut self, texture: GLenum) {
         match texture_unit(texture) {
             Some(u) => self.arrays.client_active_texture = u,
-            None => self.set_error(GL_INVALID_ENUM),
+            None => self.bad_enum("texture", texture),
         }
     }
 
     /// `glGetPointerv`: the address given to the array's `gl*Pointer` call (the texture
     /// coordinate array of the client active unit).
     pub fn get_pointer(&mut self, pname: GLenum) -> Option<usize> {
+        if let Some(p) = self.debug_pointer(pname) {
+            return Some(p);
+        }
         let a = &self.arrays;
         Some(match pname {
             GL_VERTEX_ARRAY_POINTER => a.vertex.ptr,
@@ -72,7 +75,7 @@ impl Context {
             GL_MATRIX_INDEX_ARRAY_POINTER_OES => a.matrix_index.ptr,
             GL_WEIGHT_ARRAY_POINTER_OES => a.weight.ptr,
             _ => {
-                self.set_error(GL_INVALID_ENUM);
+                self.bad_enum("pname", pname);
                 return None;
             }
         })

@@ -35,7 +35,10 @@ impl Context {
     pub fn draw_texture(&mut self, x: f32, y: f32, z: f32, width: f32, height: f32) {
         // NaN sizes are as invalid as non-positive ones.
         if !(width > 0.0 && height > 0.0) {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.fail(
+                GL_INVALID_VALUE,
+                super::debug::Why::Rule("width and height must be greater than 0"),
+            );
         }
         if !self.framebuffer_ready() {
             return;

@@ -421,7 +421,7 @@ fn store(o: &mut SharedObjects, t: &Target, key: &Key) {
 impl Context {
     fn check_target(&mut self, target: GLenum) -> bool {
         if target != GL_FRAMEBUFFER_OES {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("target", target);
             return false;
         }
         true
@@ -568,7 +568,7 @@ impl Context {
 
     pub fn gen_framebuffers(&mut self, n: i32) -> Vec<GLuint> {
         if n < 0 {
-            self.set_error(GL_INVALID_VALUE);
+            self.bad_value("n", n as i64, "n must not be negative");
             return Vec::new();
         }
         (0..n).map(|_| self.fbo.names.generate()).collect()
@@ -592,8 +592,9 @@ impl Context {
 
     pub fn delete_framebuffers(&mut self, n: i32, names: &[GLuint]) {
         if n < 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value("n", n as i64, "n must not be negative");
         }
+        self.forget_labels(GL_FRAMEBUFFER_OES, names);
         for &name in names {
             if name == 0 {
                 continue;
@@ -611,7 +612,7 @@ impl Context {
 
     pub fn gen_renderbuffers(&mut self, n: i32) -> Vec<GLuint> {
         if n < 0 {
-            self.set_error(GL_INVALID_VALUE);
+            self.bad_value("n", n as i64, "n must not be negative");
             return Vec::new();
         }
         let mut o = lock_objects(&self.shared);
@@ -620,7 +621,7 @@ impl Context {
 
     pub fn bind_renderbuffer(&mut self, target: GLenum, name: GLuint) {
         if target != GL_RENDERBUFFER_OES {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         }
         self.fbo.renderbuffer = lock_objects(&self.shared)
             .renderbuffers
@@ -632,8 +633,9 @@ impl Context {
     /// contexts keep it bound, until they let it go (see [`super::objects`]).
     pub fn delete_renderbuffers(&mut self, n: i32, names: &[GLuint]) {
         if n < 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value("n", n as i64, "n must not be negative");
         }
+        self.forget_labels(GL_RENDERBUFFER_OES, names);
         self.fbo_changing();
         let shared = self.shared.clone();
         for &name in names {
@@ -724,17 +726,27 @@ impl Context {
         h: i32,
     ) {
         if target != GL_RENDERBUFFER_OES {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         }
         let Some(kind) = renderbuffer_kind(internal_format) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("internalformat", internal_format);
         };
         let max = MAX_RENDERBUFFER_SIZE as i32;
         if !(0..=max).contains(&w) || !(0..=max).contains(&h) {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value(
+                if (0..=max).contains(&w) {
+                    "height"
+                } else {
+                    "width"
+                },
+                if (0..=max).contains(&w) { h } else { w } as i64,
+                "sizes must lie in 0..=GL_MAX_RENDERBUFFER_SIZE_OES",
+            );
         }
         if self.fbo.renderbuffer.is_none() {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation(
+                "no renderbuffer is bound to GL_RENDERBUFFER_OES (name 0 is bound)",
+            );
         }
         self.fbo_changing();
         let n = w as usize * h as usize;
@@ -769,7 +781,7 @@ impl Context {
 
     pub fn get_renderbuffer_parameter(&mut self, target: GLenum, pname: GLenum) -> Option<i32> {
         if target != GL_RENDERBUFFER_OES {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("target", target);
             return None;
         }
         let index = match pname {
@@ -783,12 +795,12 @@ impl Context {
             GL_RENDERBUFFER_DEPTH_SIZE_OES => Some(4),
             GL_RENDERBUFFER_STENCIL_SIZE_OES => Some(5),
             _ => {
-                self.set_error(GL_INVALID_ENUM);
+                self.bad_enum("pname", pname);
                 return None;
             }
         };
         if self.fbo.renderbuffer.is_none() {
-            self.set_error(GL_INVALID_OPERATION);
+            self.bad_operation("no renderbuffer is bound to GL_RENDERBUFFER_OES (name 0 is bound)");
             return None;
         }
         let o = lock_objects(&self.shared);
@@ -812,13 +824,15 @@ impl Context {
             return;
         }
         let Some(point) = attachment_point(attachment) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("attachment", attachment);
         };
         if rb_target != GL_RENDERBUFFER_OES {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("renderbuffertarget", rb_target);
         }
         if self.fbo.bound == 0 {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation(
+                "the default framebuffer (name 0) is bound; its attachments cannot change",
+            );
         }
         let a = if rb == 0 {
             Attachment::None
@@ -826,7 +840,9 @@ impl Context {
             let mut o = lock_objects(&self.shared);
             if o.renderbuffers.named(rb).is_none() {
                 drop(o);
-                return self.set_error(GL_INVALID_OPERATION);
+                return self.bad_operation(
+                    "renderbuffer is not the name of an existing renderbuffer object",
+                );
             }
             Attachment::Renderbuffer(o.renderbuffers.bind(rb, Renderbuffer::default))
         };
@@ -848,7 +864,7 @@ impl Context {
             return;
         }
         let Some(point) = attachment_point(attachment) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("attachment", attachment);
         };
         let face = match tex_target {
             GL_TEXTURE_2D => 0u8,
@@ -858,26 +874,32 @@ impl Context {
                 (t - GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES + 1) as u8
             }
             _ if texture == 0 => 0,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("textarget", tex_target),
         };
         if self.fbo.bound == 0 {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation(
+                "the default framebuffer (name 0) is bound; its attachments cannot change",
+            );
         }
         let a = if texture == 0 {
             Attachment::None
         } else {
             // OES_fbo_render_mipmap: any level a texture of the largest size has.
             if !(0..=MAX_LEVEL as i32).contains(&level) {
-                return self.set_error(GL_INVALID_VALUE);
+                return self.bad_value(
+                    "level",
+                    level as i64,
+                    "level must lie in 0..=log2(GL_MAX_TEXTURE_SIZE)",
+                );
             }
             let mut o = lock_objects(&self.shared);
             let Some(is_cube) = o.textures.named(texture).map(|t| t.is_cube_map()) else {
                 drop(o);
-                return self.set_error(GL_INVALID_OPERATION);
+                return self.bad_operation("texture is not the name of an existing texture object");
             };
             if is_cube != (face != 0) {
                 drop(o);
-                return self.set_error(GL_INVALID_OPERATION);
+                return self.bad_operation("textarget does not match the texture's kind (a cube map face for a cube map texture, GL_TEXTURE_2D for a 2D one)");
             }
             Attachment::Texture {
                 object: o.textures.bind(texture, Texture::new),
@@ -924,11 +946,13 @@ impl Context {
             return None;
         }
         let Some(point) = attachment_point(attachment) else {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("attachment", attachment);
             return None;
         };
         if self.fbo.bound == 0 {
-            self.set_error(GL_INVALID_OPERATION);
+            self.bad_operation(
+                "the default framebuffer (name 0) is bound; it has no attachments to query",
+            );
             return None;
         }
         let a = self.fbo.names.get(self.fbo.bound)?.points[point].clone();
@@ -960,7 +984,7 @@ impl Context {
             _ => None,
         };
         if v.is_none() {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("pname", pname);
         }
         v
     }
@@ -971,12 +995,12 @@ impl Context {
         let cube = match target {
             GL_TEXTURE_2D => false,
             GL_TEXTURE_CUBE_MAP_OES => true,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("target", target),
         };
         self.fbo_changing();
         let ok = self.with_target_texture(cube, |t| t.generate_mipmaps_checked());
         if !ok {
-            self.set_error(GL_INVALID_OPERATION);
+            self.bad_operation("the cube map's faces are not cube complete at level 0 (each face square, of one size and format)");
         }
     }
 

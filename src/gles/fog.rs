@@ -60,7 +60,7 @@ impl Context {
             GL_FOG_START => f.start = p.number(0),
             GL_FOG_END => f.end = p.number(0),
             GL_FOG_COLOR => f.color = p.color().map(clamp01),
-            _ => self.set_error(GL_INVALID_ENUM),
+            _ => self.bad_enum("pname", pname),
         }
     }
 

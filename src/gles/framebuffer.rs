@@ -25,7 +25,7 @@ pub struct PixelLayout {
 impl Context {
     pub fn clear(&mut self, mask: GLbitfield) {
         if mask & !(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT) != 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value("mask", mask as i64, "mask may hold only GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT and GL_STENCIL_BUFFER_BIT");
         }
         if !self.framebuffer_ready() {
             return;

@@ -163,6 +163,7 @@ const EXTENSION_LIST: &[&str] = &[
     "GL_OES_surfaceless_context",
     "GL_OES_EGL_image",
     "GL_OES_EGL_sync",
+    "GL_KHR_debug",
 ];
 
 /// `EXTENSION_LIST` as the NUL-terminated, space-separated string `glGetString` returns.
@@ -184,7 +185,7 @@ impl Context {
             GL_VERSION => VERSION,
             GL_EXTENSIONS => extensions(),
             _ => {
-                self.set_error(GL_INVALID_ENUM);
+                self.bad_enum("name", name);
                 return None;
             }
         })
@@ -207,6 +208,7 @@ impl Context {
             .or_else(|| self.buffer_value(pname))
             .or_else(|| self.fbo_value(pname))
             .or_else(|| self.vertex_array_value(pname))
+            .or_else(|| self.debug_value(pname))
         {
             return Some(v);
         }

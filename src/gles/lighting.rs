@@ -144,7 +144,7 @@ impl Context {
     /// `glLight{f,x}[v]`. A vector name through a single-value call is `GL_INVALID_ENUM`.
     pub fn light(&mut self, light: GLenum, pname: GLenum, p: Params<'_>) {
         let Some(i) = light_index(light) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("light", light);
         };
         if light_parameter_count(light, pname).is_none_or(|n| p.len() < n) {
             return self.set_error(GL_INVALID_ENUM);
@@ -171,14 +171,14 @@ impl Context {
             | GL_CONSTANT_ATTENUATION
             | GL_LINEAR_ATTENUATION
             | GL_QUADRATIC_ATTENUATION => self.set_error(GL_INVALID_VALUE),
-            _ => self.set_error(GL_INVALID_ENUM),
+            _ => self.bad_enum("pname", pname),
         }
     }
 
     /// `glGetLight{f,x}v`.
     pub fn get_light(&mut self, light: GLenum, pname: GLenum) -> Option<Value> {
         let Some(i) = light_index(light) else {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("light", light);
             return None;
         };
         let l = &self.lighting.lights[i];
@@ -195,7 +195,7 @@ impl Context {
             GL_LINEAR_ATTENUATION => f(&[l.linear_attenuation]),
             GL_QUADRATIC_ATTENUATION => f(&[l.quadratic_attenuation]),
             _ => {
-                self.set_error(GL_INVALID_ENUM);
+                self.bad_enum("pname", pname);
                 return None;
             }
         })
@@ -209,7 +209,7 @@ impl Context {
         match pname {
             GL_LIGHT_MODEL_AMBIENT => self.lighting.model_ambient = p.numbers(),
             GL_LIGHT_MODEL_TWO_SIDE => self.lighting.two_side = p.number(0) != 0.0,
-            _ => self.set_error(GL_INVALID_ENUM),
+            _ => self.bad_enum("pname", pname),
         }
     }
 
@@ -235,7 +235,7 @@ impl Context {
                 }
                 m.shininess = v;
             }
-            _ => self.set_error(GL_INVALID_ENUM),
+            _ => self.bad_enum("pname", pname),
         }
     }
 

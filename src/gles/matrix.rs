@@ -71,7 +71,11 @@ impl Context {
     /// `GL_MATRIX_PALETTE_OES` mode change.
     pub fn current_palette_matrix(&mut self, index: u32) {
         if index as usize >= MAX_PALETTE_MATRICES {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value(
+                "index",
+                index as i64,
+                "index must be less than GL_MAX_PALETTE_MATRICES_OES (32)",
+            );
         }
         self.current_palette = index as usize;
     }
@@ -88,7 +92,7 @@ impl Context {
             GL_PROJECTION => MatrixMode::Projection,
             GL_TEXTURE => MatrixMode::Texture,
             GL_MATRIX_PALETTE_OES => MatrixMode::Palette,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("mode", mode),
         };
     }
 
@@ -96,7 +100,9 @@ impl Context {
         // The palette matrices have no stacks: pushing or popping them is an invalid
         // operation (OES_matrix_palette).
         if self.matrix_mode == MatrixMode::Palette {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation(
+                "the matrix mode is GL_MATRIX_PALETTE_OES, whose matrices have no stacks",
+            );
         }
         let (stack, max) = self.stack();
         if stack.len() >= max {
@@ -108,7 +114,9 @@ impl Context {
 
     pub fn pop_matrix(&mut self) {
         if self.matrix_mode == MatrixMode::Palette {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation(
+                "the matrix mode is GL_MATRIX_PALETTE_OES, whose matrices have no stacks",
+            );
         }
         let (stack, _) = self.stack();
         if stack.len() <= 1 {
@@ -155,7 +163,12 @@ impl Context {
 
     pub fn frustum(&mut self, l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) {
         if n <= 0.0 || f <= 0.0 || l == r || b == t || n == f {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.fail(
+                GL_INVALID_VALUE,
+                super::debug::Why::Rule(
+                    "near and far must be positive, and left != right, bottom != top, near != far",
+                ),
+            );
         }
         let m = Mat4::from_cols_array(&[
             2.0 * n / (r - l),
@@ -181,7 +194,10 @@ impl Context {
 
     pub fn ortho(&mut self, l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) {
         if l == r || b == t || n == f {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.fail(
+                GL_INVALID_VALUE,
+                super::debug::Why::Rule("left != right, bottom != top and near != far must hold"),
+            );
         }
         let m = Mat4::from_cols_array(&[
             2.0 / (r - l),

@@ -6,6 +6,7 @@ pub mod clip_planes;
 pub mod context;
 pub mod current;
 pub mod current_values;
+pub mod debug;
 pub mod draw_texture;
 pub mod egl_image;
 pub mod fbo;

@@ -136,7 +136,7 @@ impl Context {
                 self.fragment.alpha_func = f;
                 self.fragment.alpha_ref = clamp01(reference);
             }
-            None => self.set_error(GL_INVALID_ENUM),
+            None => self.bad_enum("func", func),
         }
     }
 
@@ -172,14 +172,14 @@ impl Context {
 
     pub fn logic_op(&mut self, op: GLenum) {
         if !(GL_CLEAR..=GL_SET).contains(&op) {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("opcode", op);
         }
         self.fragment.logic_op = op;
     }
 
     pub fn stencil_func(&mut self, func: GLenum, reference: i32, mask: u32) {
         let Some(f) = compare_func(func) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("func", func);
         };
         let s = &mut self.fragment;
         s.stencil_func = f;

@@ -52,14 +52,20 @@ impl Context {
     /// Widths ≤ 0 are `GL_INVALID_VALUE`; NaN is rejected the same way.
     pub fn line_width(&mut self, width: f32) {
         if width.is_nan() || width <= 0.0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.fail(
+                GL_INVALID_VALUE,
+                super::debug::Why::Rule("width must be greater than 0"),
+            );
         }
         self.points_lines.line_width = width;
     }
 
     pub fn point_size(&mut self, size: f32) {
         if size.is_nan() || size <= 0.0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.fail(
+                GL_INVALID_VALUE,
+                super::debug::Why::Rule("size must be greater than 0"),
+            );
         }
         self.points_lines.point_size = size;
     }
@@ -80,7 +86,7 @@ impl Context {
                 s.point_distance_attenuation = p.numbers();
                 return;
             }
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("pname", pname),
         };
         let v = p.number(0);
         if v.is_nan() || v < 0.0 {

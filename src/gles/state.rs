@@ -11,9 +11,13 @@ use super::types::*;
 impl Context {
     pub fn set_capability(&mut self, cap: GLenum, on: bool) {
         let unit = self.active_texture;
+        if let Some(flag) = self.debug_flag(cap) {
+            *flag = on;
+            return;
+        }
         match self.enables.flag(cap, unit) {
             Some(flag) => *flag = on,
-            None => return self.set_error(GL_INVALID_ENUM),
+            None => return self.bad_enum("cap", cap),
         }
         // While enabled, the material's ambient and diffuse colors track the current color.
         if cap == GL_COLOR_MATERIAL && on {
@@ -26,11 +30,14 @@ impl Context {
         if let Some(on) = self.client_array_enabled(cap) {
             return on;
         }
+        if let Some(flag) = self.debug_flag(cap) {
+            return *flag;
+        }
         let unit = self.active_texture;
         match self.enables.flag(cap, unit) {
             Some(flag) => *flag,
             None => {
-                self.set_error(GL_INVALID_ENUM);
+                self.bad_enum("cap", cap);
                 false
             }
         }
@@ -38,7 +45,7 @@ impl Context {
 
     pub fn hint(&mut self, target: GLenum, mode: GLenum) {
         if !matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE) {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("mode", mode);
         }
         let h = &mut self.hints;
         let slot = match target {
@@ -47,7 +54,7 @@ impl Context {
             GL_LINE_SMOOTH_HINT => &mut h.line_smooth,
             GL_FOG_HINT => &mut h.fog,
             GL_GENERATE_MIPMAP_HINT => &mut h.generate_mipmap,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("target", target),
         };
         *slot = mode;
     }
@@ -55,7 +62,7 @@ impl Context {
     pub fn depth_func(&mut self, func: GLenum) {
         match compare_func(func) {
             Some(f) => self.depth_func = f,
-            None => self.set_error(GL_INVALID_ENUM),
+            None => self.bad_enum("func", func),
         }
     }
 
@@ -64,7 +71,7 @@ impl Context {
             GL_FRONT => CullFace::Front,
             GL_BACK => CullFace::Back,
             GL_FRONT_AND_BACK => CullFace::FrontAndBack,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("mode", mode),
         };
     }
 
@@ -72,7 +79,7 @@ impl Context {
         self.front_face = match mode {
             GL_CCW => Winding::Ccw,
             GL_CW => Winding::Cw,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("mode", mode),
         };
     }
 
@@ -80,7 +87,7 @@ impl Context {
         self.shade_model = match mode {
             GL_FLAT => ShadeModel::Flat,
             GL_SMOOTH => ShadeModel::Smooth,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("mode", mode),
         };
     }
 
@@ -116,7 +123,11 @@ impl Context {
     /// Negative sizes are errors; sizes beyond `GL_MAX_VIEWPORT_DIMS` are silently clamped.
     pub fn viewport(&mut self, x: i32, y: i32, w: i32, h: i32) {
         if w < 0 || h < 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value(
+                if w < 0 { "width" } else { "height" },
+                w.min(h) as i64,
+                "width and height must not be negative",
+            );
         }
         let max = MAX_VIEWPORT_DIM as i32;
         self.viewport = crate::core::Viewport {
@@ -129,7 +140,11 @@ impl Context {
 
     pub fn scissor(&mut self, x: i32, y: i32, w: i32, h: i32) {
         if w < 0 || h < 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value(
+                if w < 0 { "width" } else { "height" },
+                w.min(h) as i64,
+                "width and height must not be negative",
+            );
         }
         self.scissor_box = Rect::new(x, y, w, h);
     }
@@ -138,11 +153,11 @@ impl Context {
         let slot = match pname {
             GL_PACK_ALIGNMENT => &mut self.pack_alignment,
             GL_UNPACK_ALIGNMENT => &mut self.unpack_alignment,
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("pname", pname),
         };
         match param {
             1 | 2 | 4 | 8 => *slot = param as usize,
-            _ => self.set_error(GL_INVALID_VALUE),
+            _ => self.bad_value("param", param as i64, "an alignment must be 1, 2, 4 or 8"),
         }
     }
 }

@@ -136,10 +136,10 @@ impl Context {
                 return;
             }
             (GL_TEXTURE_ENV, _) => {}
-            _ => return self.set_error(GL_INVALID_ENUM),
+            _ => return self.bad_enum("target", target),
         }
         let Some(s) = slot(pname) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("pname", pname);
         };
         let u = &mut self.texenv.units[unit];
         match s {

@@ -473,7 +473,7 @@ impl Context {
 
     pub fn gen_textures(&mut self, n: i32) -> Vec<GLuint> {
         if n < 0 {
-            self.set_error(GL_INVALID_VALUE);
+            self.bad_value("n", n as i64, "n must not be negative");
             return Vec::new();
         }
         let mut o = lock_objects(&self.shared);
@@ -484,8 +484,9 @@ impl Context {
     /// Other contexts that have a deleted texture bound keep it (see [`super::objects`]).
     pub fn delete_textures(&mut self, n: i32, names: &[GLuint]) {
         if n < 0 {
-            return self.set_error(GL_INVALID_VALUE);
+            return self.bad_value("n", n as i64, "n must not be negative");
         }
+        self.forget_labels(GL_TEXTURE, names);
         self.texture_changing();
         let shared = self.shared.clone();
         let mut o = lock_objects(&shared);
@@ -515,7 +516,7 @@ impl Context {
     /// the other is `GL_INVALID_OPERATION`.
     pub fn bind_texture(&mut self, target: GLenum, name: GLuint) {
         let Some(cube) = object_target(target) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         };
         let mut o = lock_objects(&self.shared);
         let b = o.textures.bind(name, || {
@@ -527,7 +528,9 @@ impl Context {
         });
         if o.textures.get(&b).is_some_and(|t| t.is_cube_map() != cube) {
             drop(o);
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation(
+                "texture was first bound to the other target (2D vs cube map) and keeps that kind",
+            );
         }
         drop(o);
         let unit = self.active_texture;
@@ -551,7 +554,7 @@ impl Context {
         vector: bool,
     ) {
         let Some(cube) = object_target(target) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         };
         if pname == GL_TEXTURE_CROP_RECT_OES {
             if !vector || values.len() < 4 {
@@ -638,7 +641,7 @@ impl Context {
             _ => None,
         };
         let Some(set) = set else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("pname", pname);
         };
         self.texture_changing();
         self.with_target_texture(cube, |t| {
@@ -664,7 +667,7 @@ impl Context {
         kind: ParamKind,
     ) -> Option<Vec<f64>> {
         let Some(cube) = object_target(target) else {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("target", target);
             return None;
         };
         let v = self.with_target_texture(cube, |t| -> Option<Vec<f64>> {
@@ -714,7 +717,7 @@ impl Context {
             }
         });
         if v.is_none() {
-            self.set_error(GL_INVALID_ENUM);
+            self.bad_enum("pname", pname);
         }
         v
     }
@@ -1201,21 +1204,23 @@ impl Context {
         border: i32,
     ) {
         let Some(face) = image_target(target) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         };
         let sized = sized_format(internal_format);
         let Some(format) = base_format(internal_format).or(sized.map(|s| s.base)) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("internalformat", internal_format);
         };
         if !valid_image_size(level, width, height) || border != 0 || (face != 0 && width != height)
         {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(color) = self.read_color_format() else {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation("the read framebuffer has no color buffer to copy from");
         };
         if !copy_compatible(color, format) {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation(
+                "internalformat needs components the read framebuffer's color buffer does not have",
+            );
         }
         let r = self.read_surface().expect("checked");
         let texels = read_region(
@@ -1261,17 +1266,17 @@ impl Context {
         height: i32,
     ) {
         let Some(face) = image_target(target) else {
-            return self.set_error(GL_INVALID_ENUM);
+            return self.bad_enum("target", target);
         };
         let format = match self.check_sub_region(face, level, xoffset, yoffset, width, height) {
             Ok(f) => f,
             Err(e) => return self.set_error(e),
         };
         let Some(color) = self.read_color_format() else {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation("the read framebuffer has no color buffer to copy from");
         };
         if !copy_compatible(color, format) {
-            return self.set_error(GL_INVALID_OPERATION);
+            return self.bad_operation("the level's format needs components the read framebuffer's color buffer does not have");
         }
         if width == 0 || height == 0 {
             return;

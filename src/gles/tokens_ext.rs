@@ -251,3 +251,46 @@ pub const GL_DEPTH24_STENCIL8_OES: GLenum = 0x88F0;
 // Extension: GL_OES_surfaceless_context
 // A context current without surfaces (EGL_KHR_surfaceless_context): its default framebuffer does not exist.
 pub const GL_FRAMEBUFFER_UNDEFINED_OES: GLenum = 0x8219;
+
+// Extension: GL_KHR_debug
+// Debug messages in words, message control, debug groups and object labels (ES names).
+pub const GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR: GLenum = 0x8242;
+pub const GL_DEBUG_NEXT_LOGGED_MESSAGE_LENGTH_KHR: GLenum = 0x8243;
+pub const GL_DEBUG_CALLBACK_FUNCTION_KHR: GLenum = 0x8244;
+pub const GL_DEBUG_CALLBACK_USER_PARAM_KHR: GLenum = 0x8245;
+pub const GL_DEBUG_SOURCE_API_KHR: GLenum = 0x8246;
+pub const GL_DEBUG_SOURCE_WINDOW_SYSTEM_KHR: GLenum = 0x8247;
+pub const GL_DEBUG_SOURCE_SHADER_COMPILER_KHR: GLenum = 0x8248;
+pub const GL_DEBUG_SOURCE_THIRD_PARTY_KHR: GLenum = 0x8249;
+pub const GL_DEBUG_SOURCE_APPLICATION_KHR: GLenum = 0x824A;
+pub const GL_DEBUG_SOURCE_OTHER_KHR: GLenum = 0x824B;
+pub const GL_DEBUG_TYPE_ERROR_KHR: GLenum = 0x824C;
+pub const GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR_KHR: GLenum = 0x824D;
+pub const GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR_KHR: GLenum = 0x824E;
+pub const GL_DEBUG_TYPE_PORTABILITY_KHR: GLenum = 0x824F;
+pub const GL_DEBUG_TYPE_PERFORMANCE_KHR: GLenum = 0x8250;
+pub const GL_DEBUG_TYPE_OTHER_KHR: GLenum = 0x8251;
+pub const GL_DEBUG_TYPE_MARKER_KHR: GLenum = 0x8268;
+pub const GL_DEBUG_TYPE_PUSH_GROUP_KHR: GLenum = 0x8269;
+pub const GL_DEBUG_TYPE_POP_GROUP_KHR: GLenum = 0x826A;
+pub const GL_DEBUG_SEVERITY_NOTIFICATION_KHR: GLenum = 0x826B;
+pub const GL_MAX_DEBUG_GROUP_STACK_DEPTH_KHR: GLenum = 0x826C;
+pub const GL_DEBUG_GROUP_STACK_DEPTH_KHR: GLenum = 0x826D;
+pub const GL_BUFFER_KHR: GLenum = 0x82E0;
+pub const GL_SHADER_KHR: GLenum = 0x82E1;
+pub const GL_PROGRAM_KHR: GLenum = 0x82E2;
+pub const GL_VERTEX_ARRAY_KHR: GLenum = 0x8074;
+pub const GL_QUERY_KHR: GLenum = 0x82E3;
+pub const GL_PROGRAM_PIPELINE_KHR: GLenum = 0x82E4;
+pub const GL_SAMPLER_KHR: GLenum = 0x82E6;
+pub const GL_MAX_LABEL_LENGTH_KHR: GLenum = 0x82E8;
+pub const GL_MAX_DEBUG_MESSAGE_LENGTH_KHR: GLenum = 0x9143;
+pub const GL_MAX_DEBUG_LOGGED_MESSAGES_KHR: GLenum = 0x9144;
+pub const GL_DEBUG_LOGGED_MESSAGES_KHR: GLenum = 0x9145;
+pub const GL_DEBUG_SEVERITY_HIGH_KHR: GLenum = 0x9146;
+pub const GL_DEBUG_SEVERITY_MEDIUM_KHR: GLenum = 0x9147;
+pub const GL_DEBUG_SEVERITY_LOW_KHR: GLenum = 0x9148;
+pub const GL_DEBUG_OUTPUT_KHR: GLenum = 0x92E0;
+pub const GL_CONTEXT_FLAG_DEBUG_BIT_KHR: GLenum = 0x00000002;
+pub const GL_STACK_OVERFLOW_KHR: GLenum = 0x0503;
+pub const GL_STACK_UNDERFLOW_KHR: GLenum = 0x0504;

@@ -11,46 +11,48 @@ use super::{client_bytes, read_slice, with_context, write_values};
 
 #[no_mangle]
 pub extern "C" fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
-    with_context((), |c| {
+    with_context("glVertexPointer", (), |c| {
         c.array_pointer(ArrayKind::Vertex, size, ty, stride, ptr as usize)
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
-    with_context((), |c| {
+    with_context("glColorPointer", (), |c| {
         c.array_pointer(ArrayKind::Color, size, ty, stride, ptr as usize)
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glEnableClientState(array: GLenum) {
-    with_context((), |c| c.client_state(array, true))
+    with_context("glEnableClientState", (), |c| c.client_state(array, true))
 }
 
 #[no_mangle]
 pub extern "C" fn glDisableClientState(array: GLenum) {
-    with_context((), |c| c.client_state(array, false))
+    with_context("glDisableClientState", (), |c| c.client_state(array, false))
 }
 
 #[no_mangle]
 pub extern "C" fn glColor4f(r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat) {
-    with_context((), |c| c.color([r, g, b, a]))
+    with_context("glColor4f", (), |c| c.color([r, g, b, a]))
 }
 
 #[no_mangle]
 pub extern "C" fn glColor4x(r: GLfixed, g: GLfixed, b: GLfixed, a: GLfixed) {
-    with_context((), |c| c.color([fx(r), fx(g), fx(b), fx(a)]))
+    with_context("glColor4x", (), |c| c.color([fx(r), fx(g), fx(b), fx(a)]))
 }
 
 #[no_mangle]
 pub extern "C" fn glColor4ub(r: GLubyte, g: GLubyte, b: GLubyte, a: GLubyte) {
-    with_context((), |c| c.color([r, g, b, a].map(|v| v as f32 / 255.0)))
+    with_context("glColor4ub", (), |c| {
+        c.color([r, g, b, a].map(|v| v as f32 / 255.0))
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
-    with_context((), |c| c.draw_arrays(mode, first, count))
+    with_context("glDrawArrays", (), |c| c.draw_arrays(mode, first, count))
 }
 
 /// # Safety
@@ -63,7 +65,7 @@ pub unsafe extern "C" fn glDrawElements(
     indices: *const GLvoid,
 ) {
     // SAFETY: forwarded to the application's contract.
-    with_context((), |c| unsafe {
+    with_context("glDrawElements", (), |c| unsafe {
         draw_elements(c, mode, count, ty, indices)
     })
 }
@@ -131,7 +133,7 @@ pub unsafe extern "C" fn glMultiDrawArraysEXT(
     count: *const GLsizei,
     primcount: GLsizei,
 ) {
-    with_context((), |c| {
+    with_context("glMultiDrawArraysEXT", (), |c| {
         if primcount < 0 {
             return c.set_error(GL_INVALID_VALUE);
         }
@@ -162,7 +164,7 @@ pub unsafe extern "C" fn glMultiDrawElementsEXT(
     indices: *const *const GLvoid,
     primcount: GLsizei,
 ) {
-    with_context((), |c| {
+    with_context("glMultiDrawElementsEXT", (), |c| {
         if primcount < 0 {
             return c.set_error(GL_INVALID_VALUE);
         }
@@ -184,7 +186,7 @@ pub unsafe extern "C" fn glMultiDrawElementsEXT(
 /// A non-null `arrays` must have room for `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glGenVertexArraysOES(n: GLsizei, arrays: *mut GLuint) {
-    with_context((), |c| {
+    with_context("glGenVertexArraysOES", (), |c| {
         let v = c.gen_vertex_arrays(n);
         // SAFETY: the application provides room for `n` names.
         unsafe { write_values(arrays, v.into_iter()) }
@@ -193,14 +195,14 @@ pub unsafe extern "C" fn glGenVertexArraysOES(n: GLsizei, arrays: *mut GLuint) {
 
 #[no_mangle]
 pub extern "C" fn glBindVertexArrayOES(array: GLuint) {
-    with_context((), |c| c.bind_vertex_array(array))
+    with_context("glBindVertexArrayOES", (), |c| c.bind_vertex_array(array))
 }
 
 /// # Safety
 /// A non-null `arrays` must point to `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteVertexArraysOES(n: GLsizei, arrays: *const GLuint) {
-    with_context((), |c| {
+    with_context("glDeleteVertexArraysOES", (), |c| {
         // SAFETY: the application passes `n` names.
         let names = unsafe { read_slice(arrays, n.max(0) as usize) }.unwrap_or_default();
         c.delete_vertex_arrays(n, &names)
@@ -209,5 +211,7 @@ pub unsafe extern "C" fn glDeleteVertexArraysOES(n: GLsizei, arrays: *const GLui
 
 #[no_mangle]
 pub extern "C" fn glIsVertexArrayOES(array: GLuint) -> GLboolean {
-    with_context(0, |c| GLboolean::from(c.is_vertex_array(array)))
+    with_context("glIsVertexArrayOES", 0, |c| {
+        GLboolean::from(c.is_vertex_array(array))
+    })
 }

@@ -8,7 +8,7 @@ use super::{client_bytes, with_context, write_values};
 /// A non-null `buffers` must have room for `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
-    with_context((), |c| {
+    with_context("glGenBuffers", (), |c| {
         let v = c.gen_buffers(n);
         // SAFETY: the application provides room for `n` names.
         unsafe { write_values(buffers, v.into_iter()) }
@@ -19,7 +19,7 @@ pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
 /// A non-null `buffers` must point to `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint) {
-    with_context((), |c| {
+    with_context("glDeleteBuffers", (), |c| {
         let names: &[GLuint] = if n <= 0 || buffers.is_null() {
             &[]
         } else {
@@ -32,12 +32,12 @@ pub unsafe extern "C" fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint) {
 
 #[no_mangle]
 pub extern "C" fn glBindBuffer(target: GLenum, buffer: GLuint) {
-    with_context((), |c| c.bind_buffer(target, buffer))
+    with_context("glBindBuffer", (), |c| c.bind_buffer(target, buffer))
 }
 
 #[no_mangle]
 pub extern "C" fn glIsBuffer(buffer: GLuint) -> GLboolean {
-    with_context(0, |c| GLboolean::from(c.is_buffer(buffer)))
+    with_context("glIsBuffer", 0, |c| GLboolean::from(c.is_buffer(buffer)))
 }
 
 /// # Safety
@@ -49,7 +49,7 @@ pub unsafe extern "C" fn glBufferData(
     data: *const GLvoid,
     usage: GLenum,
 ) {
-    with_context((), |c| {
+    with_context("glBufferData", (), |c| {
         // SAFETY: the application provides `size` bytes at a non-null `data`.
         let bytes = (!data.is_null() && size > 0)
             .then(|| unsafe { client_bytes(data as usize, size as usize) });
@@ -66,7 +66,7 @@ pub unsafe extern "C" fn glBufferSubData(
     size: GLsizeiptr,
     data: *const GLvoid,
 ) {
-    with_context((), |c| {
+    with_context("glBufferSubData", (), |c| {
         if size < 0 {
             return c.set_error(crate::gles::tokens::GL_INVALID_VALUE);
         }
@@ -83,7 +83,7 @@ pub unsafe extern "C" fn glBufferSubData(
 /// A non-null `params` must have room for one value.
 #[no_mangle]
 pub unsafe extern "C" fn glGetBufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
-    with_context((), |c| {
+    with_context("glGetBufferParameteriv", (), |c| {
         if let Some(v) = c.buffer_parameter(target, pname) {
             // SAFETY: the application provides room for one value.
             unsafe { write_values(params, std::iter::once(v)) }
@@ -93,7 +93,7 @@ pub unsafe extern "C" fn glGetBufferParameteriv(target: GLenum, pname: GLenum, p
 
 #[no_mangle]
 pub extern "C" fn glMapBufferOES(target: GLenum, access: GLenum) -> *mut GLvoid {
-    with_context(std::ptr::null_mut(), |c| {
+    with_context("glMapBufferOES", std::ptr::null_mut(), |c| {
         c.map_buffer(target, access)
             .map_or(std::ptr::null_mut(), |p| p as *mut GLvoid)
     })
@@ -101,7 +101,9 @@ pub extern "C" fn glMapBufferOES(target: GLenum, access: GLenum) -> *mut GLvoid 
 
 #[no_mangle]
 pub extern "C" fn glUnmapBufferOES(target: GLenum) -> GLboolean {
-    with_context(0, |c| GLboolean::from(c.unmap_buffer(target)))
+    with_context("glUnmapBufferOES", 0, |c| {
+        GLboolean::from(c.unmap_buffer(target))
+    })
 }
 
 /// # Safety
@@ -112,7 +114,7 @@ pub unsafe extern "C" fn glGetBufferPointervOES(
     pname: GLenum,
     params: *mut *mut GLvoid,
 ) {
-    with_context((), |c| {
+    with_context("glGetBufferPointervOES", (), |c| {
         if let Some(p) = c.buffer_pointer(target, pname) {
             // SAFETY: the application provides room for one pointer.
             unsafe { write_values(params, std::iter::once(p as *mut GLvoid)) }
@@ -129,7 +131,7 @@ pub extern "C" fn glMapBufferRangeEXT(
     length: GLsizeiptr,
     access: GLbitfield,
 ) -> *mut GLvoid {
-    with_context(std::ptr::null_mut(), |c| {
+    with_context("glMapBufferRangeEXT", std::ptr::null_mut(), |c| {
         c.map_buffer_range(target, offset, length, access)
             .map_or(std::ptr::null_mut(), |p| p as *mut GLvoid)
     })
@@ -141,5 +143,7 @@ pub extern "C" fn glFlushMappedBufferRangeEXT(
     offset: GLintptr,
     length: GLsizeiptr,
 ) {
-    with_context((), |c| c.flush_mapped_buffer_range(target, offset, length))
+    with_context("glFlushMappedBufferRangeEXT", (), |c| {
+        c.flush_mapped_buffer_range(target, offset, length)
+    })
 }

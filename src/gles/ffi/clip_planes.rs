@@ -11,7 +11,7 @@ use super::{valid_params, with_context, write_values};
 /// A non-null `equation` must point to four values.
 #[no_mangle]
 pub unsafe extern "C" fn glClipPlanef(plane: GLenum, equation: *const GLfloat) {
-    with_context((), |c| {
+    with_context("glClipPlanef", (), |c| {
         // SAFETY: the caller passes four values.
         if let Some(eq) = unsafe { valid_params(c, clip_plane_count(plane), equation) } {
             c.clip_plane(plane, [eq[0], eq[1], eq[2], eq[3]])
@@ -23,7 +23,7 @@ pub unsafe extern "C" fn glClipPlanef(plane: GLenum, equation: *const GLfloat) {
 /// A non-null `equation` must point to four values.
 #[no_mangle]
 pub unsafe extern "C" fn glClipPlanex(plane: GLenum, equation: *const GLfixed) {
-    with_context((), |c| {
+    with_context("glClipPlanex", (), |c| {
         // SAFETY: the caller passes four values.
         if let Some(eq) = unsafe { valid_params(c, clip_plane_count(plane), equation) } {
             c.clip_plane(plane, [eq[0], eq[1], eq[2], eq[3]].map(fx))
@@ -35,7 +35,7 @@ pub unsafe extern "C" fn glClipPlanex(plane: GLenum, equation: *const GLfixed) {
 /// A non-null `equation` must have room for four values.
 #[no_mangle]
 pub unsafe extern "C" fn glGetClipPlanef(plane: GLenum, equation: *mut GLfloat) {
-    with_context((), |c| {
+    with_context("glGetClipPlanef", (), |c| {
         if let Some(eq) = c.get_clip_plane(plane) {
             // SAFETY: the caller provides room for four values.
             unsafe { write_values(equation, eq.into_iter()) }
@@ -47,7 +47,7 @@ pub unsafe extern "C" fn glGetClipPlanef(plane: GLenum, equation: *mut GLfloat) 
 /// A non-null `equation` must have room for four values.
 #[no_mangle]
 pub unsafe extern "C" fn glGetClipPlanex(plane: GLenum, equation: *mut GLfixed) {
-    with_context((), |c| {
+    with_context("glGetClipPlanex", (), |c| {
         if let Some(eq) = c.get_clip_plane(plane) {
             // SAFETY: the caller provides room for four values.
             unsafe { write_values(equation, eq.into_iter().map(from_f32)) }

@@ -5,28 +5,28 @@ use crate::gles::types::*;
 
 use super::{read_array, with_context};
 
-fn draw(v: [f32; 5]) {
-    with_context((), |c| c.draw_texture(v[0], v[1], v[2], v[3], v[4]))
+fn draw(call: &'static str, v: [f32; 5]) {
+    with_context(call, (), |c| c.draw_texture(v[0], v[1], v[2], v[3], v[4]))
 }
 
 #[no_mangle]
 pub extern "C" fn glDrawTexsOES(x: GLshort, y: GLshort, z: GLshort, w: GLshort, h: GLshort) {
-    draw([x, y, z, w, h].map(f32::from))
+    draw("glDrawTexsOES", [x, y, z, w, h].map(f32::from))
 }
 
 #[no_mangle]
 pub extern "C" fn glDrawTexiOES(x: GLint, y: GLint, z: GLint, w: GLint, h: GLint) {
-    draw([x, y, z, w, h].map(|v| v as f32))
+    draw("glDrawTexiOES", [x, y, z, w, h].map(|v| v as f32))
 }
 
 #[no_mangle]
 pub extern "C" fn glDrawTexxOES(x: GLfixed, y: GLfixed, z: GLfixed, w: GLfixed, h: GLfixed) {
-    draw([x, y, z, w, h].map(fixed::to_f32))
+    draw("glDrawTexxOES", [x, y, z, w, h].map(fixed::to_f32))
 }
 
 #[no_mangle]
 pub extern "C" fn glDrawTexfOES(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat, h: GLfloat) {
-    draw([x, y, z, w, h])
+    draw("glDrawTexfOES", [x, y, z, w, h])
 }
 
 /// # Safety
@@ -35,7 +35,7 @@ pub extern "C" fn glDrawTexfOES(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat, 
 pub unsafe extern "C" fn glDrawTexsvOES(coords: *const GLshort) {
     // SAFETY: the application passes 5 values.
     if let Some(v) = unsafe { read_array::<_, 5>(coords) } {
-        draw(v.map(f32::from))
+        draw("glDrawTexsvOES", v.map(f32::from))
     }
 }
 
@@ -45,7 +45,7 @@ pub unsafe extern "C" fn glDrawTexsvOES(coords: *const GLshort) {
 pub unsafe extern "C" fn glDrawTexivOES(coords: *const GLint) {
     // SAFETY: the application passes 5 values.
     if let Some(v) = unsafe { read_array::<_, 5>(coords) } {
-        draw(v.map(|c| c as f32))
+        draw("glDrawTexivOES", v.map(|c| c as f32))
     }
 }
 
@@ -55,7 +55,7 @@ pub unsafe extern "C" fn glDrawTexivOES(coords: *const GLint) {
 pub unsafe extern "C" fn glDrawTexxvOES(coords: *const GLfixed) {
     // SAFETY: the application passes 5 values.
     if let Some(v) = unsafe { read_array::<_, 5>(coords) } {
-        draw(v.map(fixed::to_f32))
+        draw("glDrawTexxvOES", v.map(fixed::to_f32))
     }
 }
 
@@ -65,6 +65,6 @@ pub unsafe extern "C" fn glDrawTexxvOES(coords: *const GLfixed) {
 pub unsafe extern "C" fn glDrawTexfvOES(coords: *const GLfloat) {
     // SAFETY: the application passes 5 values.
     if let Some(v) = unsafe { read_array::<_, 5>(coords) } {
-        draw(v)
+        draw("glDrawTexfvOES", v)
     }
 }

@@ -9,7 +9,7 @@ use super::{read_slice, with_context, write_values};
 /// A non-null `framebuffers` must have room for `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glGenFramebuffersOES(n: GLsizei, framebuffers: *mut GLuint) {
-    with_context((), |c| {
+    with_context("glGenFramebuffersOES", (), |c| {
         let v = c.gen_framebuffers(n);
         // SAFETY: the application provides room for `n` names.
         unsafe { write_values(framebuffers, v.into_iter()) }
@@ -21,26 +21,30 @@ pub unsafe extern "C" fn glGenFramebuffersOES(n: GLsizei, framebuffers: *mut GLu
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteFramebuffersOES(n: GLsizei, framebuffers: *const GLuint) {
     // SAFETY: the application passes `n` names.
-    with_context((), |c| {
+    with_context("glDeleteFramebuffersOES", (), |c| {
         c.delete_framebuffers(n, unsafe { names(n, framebuffers) })
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glBindFramebufferOES(target: GLenum, framebuffer: GLuint) {
-    with_context((), |c| c.bind_framebuffer(target, framebuffer))
+    with_context("glBindFramebufferOES", (), |c| {
+        c.bind_framebuffer(target, framebuffer)
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glIsFramebufferOES(framebuffer: GLuint) -> GLboolean {
-    with_context(0, |c| GLboolean::from(c.is_framebuffer(framebuffer)))
+    with_context("glIsFramebufferOES", 0, |c| {
+        GLboolean::from(c.is_framebuffer(framebuffer))
+    })
 }
 
 /// # Safety
 /// A non-null `renderbuffers` must have room for `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glGenRenderbuffersOES(n: GLsizei, renderbuffers: *mut GLuint) {
-    with_context((), |c| {
+    with_context("glGenRenderbuffersOES", (), |c| {
         let v = c.gen_renderbuffers(n);
         // SAFETY: the application provides room for `n` names.
         unsafe { write_values(renderbuffers, v.into_iter()) }
@@ -52,19 +56,23 @@ pub unsafe extern "C" fn glGenRenderbuffersOES(n: GLsizei, renderbuffers: *mut G
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteRenderbuffersOES(n: GLsizei, renderbuffers: *const GLuint) {
     // SAFETY: the application passes `n` names.
-    with_context((), |c| {
+    with_context("glDeleteRenderbuffersOES", (), |c| {
         c.delete_renderbuffers(n, unsafe { names(n, renderbuffers) })
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glBindRenderbufferOES(target: GLenum, renderbuffer: GLuint) {
-    with_context((), |c| c.bind_renderbuffer(target, renderbuffer))
+    with_context("glBindRenderbufferOES", (), |c| {
+        c.bind_renderbuffer(target, renderbuffer)
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glIsRenderbufferOES(renderbuffer: GLuint) -> GLboolean {
-    with_context(0, |c| GLboolean::from(c.is_renderbuffer(renderbuffer)))
+    with_context("glIsRenderbufferOES", 0, |c| {
+        GLboolean::from(c.is_renderbuffer(renderbuffer))
+    })
 }
 
 #[no_mangle]
@@ -74,7 +82,7 @@ pub extern "C" fn glRenderbufferStorageOES(
     width: GLsizei,
     height: GLsizei,
 ) {
-    with_context((), |c| {
+    with_context("glRenderbufferStorageOES", (), |c| {
         c.renderbuffer_storage(target, internalformat, width, height)
     })
 }
@@ -87,7 +95,7 @@ pub unsafe extern "C" fn glGetRenderbufferParameterivOES(
     pname: GLenum,
     params: *mut GLint,
 ) {
-    with_context((), |c| {
+    with_context("glGetRenderbufferParameterivOES", (), |c| {
         if let Some(v) = c.get_renderbuffer_parameter(target, pname) {
             // SAFETY: the application provides room for one value.
             unsafe { write_values(params, std::iter::once(v)) }
@@ -102,7 +110,7 @@ pub extern "C" fn glFramebufferRenderbufferOES(
     renderbuffertarget: GLenum,
     renderbuffer: GLuint,
 ) {
-    with_context((), |c| {
+    with_context("glFramebufferRenderbufferOES", (), |c| {
         c.framebuffer_renderbuffer(target, attachment, renderbuffertarget, renderbuffer)
     })
 }
@@ -115,14 +123,16 @@ pub extern "C" fn glFramebufferTexture2DOES(
     texture: GLuint,
     level: GLint,
 ) {
-    with_context((), |c| {
+    with_context("glFramebufferTexture2DOES", (), |c| {
         c.framebuffer_texture_2d(target, attachment, textarget, texture, level)
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glCheckFramebufferStatusOES(target: GLenum) -> GLenum {
-    with_context(0, |c| c.check_framebuffer_status(target))
+    with_context("glCheckFramebufferStatusOES", 0, |c| {
+        c.check_framebuffer_status(target)
+    })
 }
 
 /// # Safety
@@ -134,7 +144,7 @@ pub unsafe extern "C" fn glGetFramebufferAttachmentParameterivOES(
     pname: GLenum,
     params: *mut GLint,
 ) {
-    with_context((), |c| {
+    with_context("glGetFramebufferAttachmentParameterivOES", (), |c| {
         if let Some(v) = c.get_framebuffer_attachment_parameter(target, attachment, pname) {
             // SAFETY: the application provides room for one value.
             unsafe { write_values(params, std::iter::once(v)) }
@@ -144,7 +154,7 @@ pub unsafe extern "C" fn glGetFramebufferAttachmentParameterivOES(
 
 #[no_mangle]
 pub extern "C" fn glGenerateMipmapOES(target: GLenum) {
-    with_context((), |c| c.generate_mipmap(target))
+    with_context("glGenerateMipmapOES", (), |c| c.generate_mipmap(target))
 }
 
 /// `EXT_discard_framebuffer`.
@@ -157,7 +167,7 @@ pub unsafe extern "C" fn glDiscardFramebufferEXT(
     num_attachments: GLsizei,
     attachments: *const GLenum,
 ) {
-    with_context((), |c| {
+    with_context("glDiscardFramebufferEXT", (), |c| {
         if num_attachments < 0 {
             return c.set_error(crate::gles::tokens::GL_INVALID_VALUE);
         }
@@ -170,7 +180,7 @@ pub unsafe extern "C" fn glDiscardFramebufferEXT(
 /// `OES_EGL_image`. The handle is looked up, never dereferenced.
 #[no_mangle]
 pub extern "C" fn glEGLImageTargetRenderbufferStorageOES(target: GLenum, image: GLeglImageOES) {
-    with_context((), |c| {
+    with_context("glEGLImageTargetRenderbufferStorageOES", (), |c| {
         c.egl_image_target_renderbuffer_storage(target, crate::gles::egl_image::get(image as usize))
     })
 }

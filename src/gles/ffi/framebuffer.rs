@@ -11,92 +11,96 @@ fn b(v: GLboolean) -> bool {
 
 #[no_mangle]
 pub extern "C" fn glClear(mask: GLbitfield) {
-    with_context((), |c| c.clear(mask))
+    with_context("glClear", (), |c| c.clear(mask))
 }
 
 #[no_mangle]
 pub extern "C" fn glClearColor(r: GLclampf, g: GLclampf, bl: GLclampf, a: GLclampf) {
-    with_context((), |c| c.clear_color([r, g, bl, a]))
+    with_context("glClearColor", (), |c| c.clear_color([r, g, bl, a]))
 }
 
 #[no_mangle]
 pub extern "C" fn glClearColorx(r: GLclampx, g: GLclampx, bl: GLclampx, a: GLclampx) {
-    with_context((), |c| c.clear_color([fx(r), fx(g), fx(bl), fx(a)]))
+    with_context("glClearColorx", (), |c| {
+        c.clear_color([fx(r), fx(g), fx(bl), fx(a)])
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glClearDepthf(depth: GLclampf) {
-    with_context((), |c| c.clear_depth(depth))
+    with_context("glClearDepthf", (), |c| c.clear_depth(depth))
 }
 
 #[no_mangle]
 pub extern "C" fn glClearDepthx(depth: GLclampx) {
-    with_context((), |c| c.clear_depth(fx(depth)))
+    with_context("glClearDepthx", (), |c| c.clear_depth(fx(depth)))
 }
 
 #[no_mangle]
 pub extern "C" fn glClearStencil(s: GLint) {
-    with_context((), |c| c.clear_stencil(s))
+    with_context("glClearStencil", (), |c| c.clear_stencil(s))
 }
 
 #[no_mangle]
 pub extern "C" fn glColorMask(r: GLboolean, g: GLboolean, bl: GLboolean, a: GLboolean) {
-    with_context((), |c| c.color_mask([b(r), b(g), b(bl), b(a)]))
+    with_context("glColorMask", (), |c| {
+        c.color_mask([b(r), b(g), b(bl), b(a)])
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glDepthMask(flag: GLboolean) {
-    with_context((), |c| c.depth_mask(b(flag)))
+    with_context("glDepthMask", (), |c| c.depth_mask(b(flag)))
 }
 
 #[no_mangle]
 pub extern "C" fn glStencilMask(mask: GLuint) {
-    with_context((), |c| c.stencil_mask(mask))
+    with_context("glStencilMask", (), |c| c.stencil_mask(mask))
 }
 
 #[no_mangle]
 pub extern "C" fn glDepthFunc(func: GLenum) {
-    with_context((), |c| c.depth_func(func))
+    with_context("glDepthFunc", (), |c| c.depth_func(func))
 }
 
 #[no_mangle]
 pub extern "C" fn glDepthRangef(near: GLclampf, far: GLclampf) {
-    with_context((), |c| c.depth_range(near, far))
+    with_context("glDepthRangef", (), |c| c.depth_range(near, far))
 }
 
 #[no_mangle]
 pub extern "C" fn glDepthRangex(near: GLclampx, far: GLclampx) {
-    with_context((), |c| c.depth_range(fx(near), fx(far)))
+    with_context("glDepthRangex", (), |c| c.depth_range(fx(near), fx(far)))
 }
 
 #[no_mangle]
 pub extern "C" fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
-    with_context((), |c| c.viewport(x, y, width, height))
+    with_context("glViewport", (), |c| c.viewport(x, y, width, height))
 }
 
 #[no_mangle]
 pub extern "C" fn glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
-    with_context((), |c| c.scissor(x, y, width, height))
+    with_context("glScissor", (), |c| c.scissor(x, y, width, height))
 }
 
 #[no_mangle]
 pub extern "C" fn glCullFace(mode: GLenum) {
-    with_context((), |c| c.cull_face(mode))
+    with_context("glCullFace", (), |c| c.cull_face(mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glFrontFace(mode: GLenum) {
-    with_context((), |c| c.front_face(mode))
+    with_context("glFrontFace", (), |c| c.front_face(mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glShadeModel(mode: GLenum) {
-    with_context((), |c| c.shade_model(mode))
+    with_context("glShadeModel", (), |c| c.shade_model(mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glPixelStorei(pname: GLenum, param: GLint) {
-    with_context((), |c| c.pixel_store(pname, param))
+    with_context("glPixelStorei", (), |c| c.pixel_store(pname, param))
 }
 
 /// # Safety
@@ -111,7 +115,7 @@ pub unsafe extern "C" fn glReadPixels(
     ty: GLenum,
     pixels: *mut GLvoid,
 ) {
-    with_context((), |c| {
+    with_context("glReadPixels", (), |c| {
         let layout = match c.read_pixels_layout(width, height, format, ty) {
             Ok(l) => l,
             Err(e) => return c.set_error(e),

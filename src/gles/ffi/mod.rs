@@ -12,6 +12,7 @@ mod arrays;
 mod buffer;
 mod clip_planes;
 mod current_values;
+mod debug;
 mod draw_texture;
 mod fbo;
 mod fog;
@@ -31,6 +32,7 @@ pub use arrays::*;
 pub use buffer::*;
 pub use clip_planes::*;
 pub use current_values::*;
+pub use debug::*;
 pub use draw_texture::*;
 pub use fbo::*;
 pub use fog::*;
@@ -46,21 +48,36 @@ pub use texenv::*;
 pub use texgen::*;
 pub use texture::*;
 
-/// Runs `f` on the calling thread's current context. Without one the call does nothing and
-/// returns `default` (so also once the thread's locals are destroyed, as in an `atexit`
-/// handler). A panic inside is caught here, never crossing into C, and reported as
-/// `GL_OUT_OF_MEMORY` (the only error GL lets an implementation raise at any time).
-pub(crate) fn with_context<R>(default: R, f: impl FnOnce(&mut Context) -> R) -> R {
+/// Runs `f` on the calling thread's current context, as entry point `call` (the name debug
+/// messages give). Without a context the call does nothing and returns `default` (so also
+/// once the thread's locals are destroyed, as in an `atexit` handler). A panic inside is
+/// caught here, never crossing into C, and reported as `GL_OUT_OF_MEMORY` (the only error GL
+/// lets an implementation raise at any time). Debug messages for the application's callback
+/// are delivered after the context is unlocked, before the entry point returns.
+pub(crate) fn with_context<R>(
+    call: &'static str,
+    default: R,
+    f: impl FnOnce(&mut Context) -> R,
+) -> R {
     let Some(ctx) = current::get() else {
         return default;
     };
-    match crate::boundary::catch(|| f(&mut current::lock(&ctx))) {
-        Some(r) => r,
-        None => {
-            current::lock(&ctx).set_error(GL_OUT_OF_MEMORY);
-            default
-        }
+    let ran = crate::boundary::catch(|| {
+        let mut c = current::lock(&ctx);
+        c.call = call;
+        let r = f(&mut c);
+        (r, c.debug.take_pending())
+    });
+    let (r, pending) = ran.unwrap_or_else(|| {
+        let mut c = current::lock(&ctx);
+        c.call = call;
+        c.set_error(GL_OUT_OF_MEMORY);
+        (default, c.debug.take_pending())
+    });
+    if let Some((callback, user, messages)) = pending {
+        debug::deliver(callback, user, messages);
     }
+    r
 }
 
 /// Views `len` bytes of client memory at `ptr` (a non-null address `len` bytes of which the

@@ -7,12 +7,16 @@ use super::with_context;
 
 #[no_mangle]
 pub extern "C" fn glCurrentPaletteMatrixOES(index: GLuint) {
-    with_context((), |c| c.current_palette_matrix(index))
+    with_context("glCurrentPaletteMatrixOES", (), |c| {
+        c.current_palette_matrix(index)
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glLoadPaletteFromModelViewMatrixOES() {
-    with_context((), |c| c.load_palette_from_modelview())
+    with_context("glLoadPaletteFromModelViewMatrixOES", (), |c| {
+        c.load_palette_from_modelview()
+    })
 }
 
 #[no_mangle]
@@ -22,14 +26,14 @@ pub extern "C" fn glMatrixIndexPointerOES(
     stride: GLsizei,
     ptr: *const GLvoid,
 ) {
-    with_context((), |c| {
+    with_context("glMatrixIndexPointerOES", (), |c| {
         c.array_pointer(ArrayKind::MatrixIndex, size, ty, stride, ptr as usize)
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glWeightPointerOES(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
-    with_context((), |c| {
+    with_context("glWeightPointerOES", (), |c| {
         c.array_pointer(ArrayKind::Weight, size, ty, stride, ptr as usize)
     })
 }
@@ -45,7 +49,7 @@ pub unsafe extern "C" fn glQueryMatrixxOES(
     mantissa: *mut GLfixed,
     exponent: *mut GLint,
 ) -> GLbitfield {
-    with_context(0xFFFF, |c| {
+    with_context("glQueryMatrixxOES", 0xFFFF, |c| {
         let (m, e, status) = c.query_matrix();
         if !mantissa.is_null() {
             // SAFETY: the caller provides room for 16 values.

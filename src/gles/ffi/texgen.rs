@@ -11,24 +11,30 @@ use super::{valid_params, with_context, write_values};
 
 #[no_mangle]
 pub extern "C" fn glTexGenfOES(coord: GLenum, pname: GLenum, param: GLfloat) {
-    with_context((), |c| c.tex_gen(coord, pname, param as f64))
+    with_context("glTexGenfOES", (), |c| {
+        c.tex_gen(coord, pname, param as f64)
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glTexGeniOES(coord: GLenum, pname: GLenum, param: GLint) {
-    with_context((), |c| c.tex_gen(coord, pname, param as f64))
+    with_context("glTexGeniOES", (), |c| {
+        c.tex_gen(coord, pname, param as f64)
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glTexGenxOES(coord: GLenum, pname: GLenum, param: GLfixed) {
-    with_context((), |c| c.tex_gen(coord, pname, param as f64))
+    with_context("glTexGenxOES", (), |c| {
+        c.tex_gen(coord, pname, param as f64)
+    })
 }
 
 /// # Safety
 /// A non-null `params` must point to one value.
 #[no_mangle]
 pub unsafe extern "C" fn glTexGenfvOES(coord: GLenum, pname: GLenum, params: *const GLfloat) {
-    with_context((), |c| {
+    with_context("glTexGenfvOES", (), |c| {
         // SAFETY: the application passes one value.
         if let Some(v) = unsafe { valid_params(c, tex_gen_parameter_count(coord, pname), params) } {
             c.tex_gen(coord, pname, v[0] as f64)
@@ -40,7 +46,7 @@ pub unsafe extern "C" fn glTexGenfvOES(coord: GLenum, pname: GLenum, params: *co
 /// A non-null `params` must point to one value.
 #[no_mangle]
 pub unsafe extern "C" fn glTexGenivOES(coord: GLenum, pname: GLenum, params: *const GLint) {
-    with_context((), |c| {
+    with_context("glTexGenivOES", (), |c| {
         // SAFETY: the application passes one value.
         if let Some(v) = unsafe { valid_params(c, tex_gen_parameter_count(coord, pname), params) } {
             c.tex_gen(coord, pname, v[0] as f64)
@@ -52,7 +58,7 @@ pub unsafe extern "C" fn glTexGenivOES(coord: GLenum, pname: GLenum, params: *co
 /// A non-null `params` must point to one value.
 #[no_mangle]
 pub unsafe extern "C" fn glTexGenxvOES(coord: GLenum, pname: GLenum, params: *const GLfixed) {
-    with_context((), |c| {
+    with_context("glTexGenxvOES", (), |c| {
         // SAFETY: the application passes one value.
         if let Some(v) = unsafe { valid_params(c, tex_gen_parameter_count(coord, pname), params) } {
             c.tex_gen(coord, pname, v[0] as f64)
@@ -64,7 +70,7 @@ pub unsafe extern "C" fn glTexGenxvOES(coord: GLenum, pname: GLenum, params: *co
 /// A non-null `params` must have room for one value.
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexGenfvOES(coord: GLenum, pname: GLenum, params: *mut GLfloat) {
-    with_context((), |c| {
+    with_context("glGetTexGenfvOES", (), |c| {
         if let Some(m) = c.get_tex_gen(coord, pname) {
             // SAFETY: the application provides room for one value.
             unsafe { write_values(params, std::iter::once(m as GLfloat)) }
@@ -76,7 +82,7 @@ pub unsafe extern "C" fn glGetTexGenfvOES(coord: GLenum, pname: GLenum, params: 
 /// A non-null `params` must have room for one value.
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexGenivOES(coord: GLenum, pname: GLenum, params: *mut GLint) {
-    with_context((), |c| {
+    with_context("glGetTexGenivOES", (), |c| {
         if let Some(m) = c.get_tex_gen(coord, pname) {
             // SAFETY: the application provides room for one value.
             unsafe { write_values(params, std::iter::once(m as GLint)) }
@@ -88,7 +94,7 @@ pub unsafe extern "C" fn glGetTexGenivOES(coord: GLenum, pname: GLenum, params: 
 /// A non-null `params` must have room for one value.
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexGenxvOES(coord: GLenum, pname: GLenum, params: *mut GLfixed) {
-    with_context((), |c| {
+    with_context("glGetTexGenxvOES", (), |c| {
         if let Some(m) = c.get_tex_gen(coord, pname) {
             // SAFETY: the application provides room for one value.
             unsafe { write_values(params, std::iter::once(m as GLfixed)) }

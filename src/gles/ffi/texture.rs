@@ -23,7 +23,7 @@ pub(super) unsafe fn names<'a>(n: GLsizei, names: *const GLuint) -> &'a [GLuint]
 /// A non-null `textures` must have room for `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
-    with_context((), |c| {
+    with_context("glGenTextures", (), |c| {
         let v = c.gen_textures(n);
         // SAFETY: the application provides room for `n` names.
         unsafe { write_values(textures, v.into_iter()) }
@@ -35,36 +35,38 @@ pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
     // SAFETY: the application passes `n` names.
-    with_context((), |c| c.delete_textures(n, unsafe { names(n, textures) }))
+    with_context("glDeleteTextures", (), |c| {
+        c.delete_textures(n, unsafe { names(n, textures) })
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
-    with_context((), |c| c.bind_texture(target, texture))
+    with_context("glBindTexture", (), |c| c.bind_texture(target, texture))
 }
 
 #[no_mangle]
 pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
-    with_context(0, |c| GLboolean::from(c.is_texture(texture)))
+    with_context("glIsTexture", 0, |c| GLboolean::from(c.is_texture(texture)))
 }
 
 #[no_mangle]
 pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
-    with_context((), |c| {
+    with_context("glTexParameteri", (), |c| {
         c.tex_parameter(target, pname, &[param as f64], ParamKind::Int, false)
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
-    with_context((), |c| {
+    with_context("glTexParameterf", (), |c| {
         c.tex_parameter(target, pname, &[param as f64], ParamKind::Float, false)
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glTexParameterx(target: GLenum, pname: GLenum, param: GLfixed) {
-    with_context((), |c| {
+    with_context("glTexParameterx", (), |c| {
         c.tex_parameter(target, pname, &[param as f64], ParamKind::Fixed, false)
     })
 }
@@ -94,7 +96,7 @@ unsafe fn read_params<T: Copy + Into<f64>>(pname: GLenum, params: *const T) -> V
 /// A non-null `params` must point to the values `pname` takes (4 for the crop rectangle).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
-    with_context((), |c| {
+    with_context("glTexParameteriv", (), |c| {
         // SAFETY: forwarded to the application's contract.
         let v = unsafe { read_params(pname, params) };
         c.tex_parameter(target, pname, &v, ParamKind::Int, true)
@@ -105,7 +107,7 @@ pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params:
 /// A non-null `params` must point to the values `pname` takes (4 for the crop rectangle).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-    with_context((), |c| {
+    with_context("glTexParameterfv", (), |c| {
         // SAFETY: forwarded to the application's contract.
         let v = unsafe { read_params(pname, params) };
         c.tex_parameter(target, pname, &v, ParamKind::Float, true)
@@ -116,7 +118,7 @@ pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params:
 /// A non-null `params` must point to the values `pname` takes (4 for the crop rectangle).
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameterxv(target: GLenum, pname: GLenum, params: *const GLfixed) {
-    with_context((), |c| {
+    with_context("glTexParameterxv", (), |c| {
         // SAFETY: forwarded to the application's contract.
         let v = unsafe { read_params(pname, params) };
         c.tex_parameter(target, pname, &v, ParamKind::Fixed, true)
@@ -127,7 +129,7 @@ pub unsafe extern "C" fn glTexParameterxv(target: GLenum, pname: GLenum, params:
 /// A non-null `params` must have room for the values of `pname` (4 for the crop rectangle).
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
-    with_context((), |c| {
+    with_context("glGetTexParameteriv", (), |c| {
         if let Some(v) = c.get_tex_parameter(target, pname, ParamKind::Int) {
             // SAFETY: the application provides room for the values.
             unsafe { write_values(params, v.into_iter().map(|x| x as GLint)) }
@@ -139,7 +141,7 @@ pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, para
 /// A non-null `params` must have room for the values of `pname` (4 for the crop rectangle).
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
-    with_context((), |c| {
+    with_context("glGetTexParameterfv", (), |c| {
         if let Some(v) = c.get_tex_parameter(target, pname, ParamKind::Float) {
             // SAFETY: the application provides room for the values.
             unsafe { write_values(params, v.into_iter().map(|x| x as GLfloat)) }
@@ -151,7 +153,7 @@ pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, para
 /// A non-null `params` must have room for the values of `pname` (4 for the crop rectangle).
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexParameterxv(target: GLenum, pname: GLenum, params: *mut GLfixed) {
-    with_context((), |c| {
+    with_context("glGetTexParameterxv", (), |c| {
         if let Some(v) = c.get_tex_parameter(target, pname, ParamKind::Fixed) {
             // SAFETY: the application provides room for the values.
             unsafe { write_values(params, v.into_iter().map(|x| x as GLfixed)) }
@@ -173,7 +175,7 @@ pub unsafe extern "C" fn glTexImage2D(
     ty: GLenum,
     pixels: *const GLvoid,
 ) {
-    with_context((), |c| {
+    with_context("glTexImage2D", (), |c| {
         let up = match c.tex_image_2d_layout(
             target,
             level,
@@ -208,7 +210,7 @@ pub unsafe extern "C" fn glTexSubImage2D(
     ty: GLenum,
     pixels: *const GLvoid,
 ) {
-    with_context((), |c| {
+    with_context("glTexSubImage2D", (), |c| {
         let up = match c
             .tex_sub_image_2d_layout(target, level, xoffset, yoffset, width, height, format, ty)
         {
@@ -237,7 +239,7 @@ pub unsafe extern "C" fn glCompressedTexImage2D(
     image_size: GLsizei,
     data: *const GLvoid,
 ) {
-    with_context((), |c| {
+    with_context("glCompressedTexImage2D", (), |c| {
         let (format, levels, face) = match c.compressed_tex_image_2d_check(
             target,
             level,
@@ -271,7 +273,7 @@ pub unsafe extern "C" fn glCompressedTexSubImage2D(
     image_size: GLsizei,
     data: *const GLvoid,
 ) {
-    with_context((), |c| {
+    with_context("glCompressedTexSubImage2D", (), |c| {
         let update = match c.compressed_tex_sub_image_2d_check(
             target, level, xoffset, yoffset, width, height, format, image_size,
         ) {
@@ -296,7 +298,7 @@ pub extern "C" fn glCopyTexImage2D(
     height: GLsizei,
     border: GLint,
 ) {
-    with_context((), |c| {
+    with_context("glCopyTexImage2D", (), |c| {
         c.copy_tex_image_2d(target, level, internalformat, x, y, width, height, border)
     })
 }
@@ -312,7 +314,7 @@ pub extern "C" fn glCopyTexSubImage2D(
     width: GLsizei,
     height: GLsizei,
 ) {
-    with_context((), |c| {
+    with_context("glCopyTexSubImage2D", (), |c| {
         c.copy_tex_sub_image_2d(target, level, xoffset, yoffset, x, y, width, height)
     })
 }
@@ -320,7 +322,7 @@ pub extern "C" fn glCopyTexSubImage2D(
 /// `OES_EGL_image`. The handle is looked up, never dereferenced.
 #[no_mangle]
 pub extern "C" fn glEGLImageTargetTexture2DOES(target: GLenum, image: GLeglImageOES) {
-    with_context((), |c| {
+    with_context("glEGLImageTargetTexture2DOES", (), |c| {
         c.egl_image_target_texture_2d(target, crate::gles::egl_image::get(image as usize))
     })
 }
