@@ -454,8 +454,16 @@ const SONAME: &str = "libGLES_CM.so.1";
 /// the `#[no_mangle] pub extern` functions and makes everything else local, and a second
 /// script could not hide a symbol rustc lists. So a stray `#[no_mangle]` function is caught
 /// by `tests/symbols.rs`, not hidden here.
+///
+/// `-Bsymbolic-functions` binds the library's references to its own functions at link time.
+/// Loaded as a glvnd vendor, the library shares the process with glvnd's `libEGL.so.1` and
+/// `libGLESv1_CM.so.1`, which export the same `egl*`/`gl*` names and come first in the
+/// lookup scope: without it, an address eglGetProcAddress (or glvnd's `getProcAddress`)
+/// hands out could be glvnd's dispatching function of that name, which would call back into
+/// us forever.
 fn link_options(out: &Path) {
     println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,{SONAME}");
+    println!("cargo:rustc-cdylib-link-arg=-Wl,-Bsymbolic-functions");
     let Some(profile) = out.ancestors().nth(3) else {
         return;
     };

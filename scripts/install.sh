@@ -8,6 +8,9 @@
 #   LIBDIR/libGLES_CM.so                  -> libGLES_CM.so.1, for -lGLES_CM
 #   LIBDIR/libGLESv1_CM.so.1, libGLESv1_CM.so, libEGL.so.1, libEGL.so
 #                                         -> libGLES_CM.so.1, the compatibility names
+#   LIBDIR/libEGL_gles_cm.so.0            -> libGLES_CM.so.1, the glvnd EGL vendor library
+#   PREFIX/share/glvnd/egl_vendor.d/50_gles_cm.json
+#                                         glvnd's vendor file, naming LIBDIR/libEGL_gles_cm.so.0
 #   LIBDIR/pkgconfig/glesv1_cm.pc, egl.pc
 #   PREFIX/include/gles-cm/{GLES,EGL,KHR}/*.h
 #   PREFIX/bin/m3g-render                 (stripped, its debug info in PREFIX/bin/.debug)
@@ -19,7 +22,9 @@
 # Environment:
 #   DESTDIR=dir        stage into dir (the .pc files still say PREFIX), as packagers do
 #   STRIP=0            install unstripped, with no .debug files
-#   COMPAT=0           leave out the compatibility names
+#   COMPAT=0           leave out the compatibility names (for machines with glvnd, whose
+#                      libEGL.so.1 and libGLESv1_CM.so.1 they would shadow in LIBDIR)
+#   GLVND=0            leave out the glvnd vendor library and its vendor file
 #   CARGO_TARGET_DIR   where cargo put the build (default: target/ of this repository)
 #   GLES_CM_LIB=path   the library file to install (default: the release build's)
 #
@@ -46,6 +51,13 @@ bin=$target/release/m3g-render
 soname=libGLES_CM.so.1
 compat="libGLESv1_CM.so.1 libGLESv1_CM.so libEGL.so.1 libEGL.so"
 [ "${COMPAT:-1}" = 0 ] && compat=""
+# The glvnd vendor is the same library under the name glvnd's convention gives vendors
+# (libEGL_<vendor>.so.0): a link, so a process that also loads libGLES_CM.so.1 maps one object.
+vendor=libEGL_gles_cm.so.0
+vendor_json=50_gles_cm.json
+glvnd=1
+[ "${GLVND:-1}" = 0 ] && glvnd=0
+d_vendor=$destdir$prefix/share/glvnd/egl_vendor.d
 d_lib=$destdir$libdir
 d_inc=$destdir$prefix/include/gles-cm
 d_bin=$destdir$prefix/bin
@@ -54,14 +66,16 @@ if [ "$mode" = uninstall ]; then
     rm -f "$d_lib/$soname" "$d_lib/.debug/$soname.debug" "$d_lib/libGLES_CM.so" \
         "$d_lib/pkgconfig/glesv1_cm.pc" "$d_lib/pkgconfig/egl.pc" \
         "$d_bin/m3g-render" "$d_bin/.debug/m3g-render.debug"
-    for name in libGLESv1_CM.so.1 libGLESv1_CM.so libEGL.so.1 libEGL.so; do
+    rm -f "$d_vendor/$vendor_json"
+    for name in libGLESv1_CM.so.1 libGLESv1_CM.so libEGL.so.1 libEGL.so $vendor; do
         # Only our links: another implementation's file of that name stays.
         if [ -L "$d_lib/$name" ] && [ "$(readlink "$d_lib/$name")" = "$soname" ]; then
             rm -f "$d_lib/$name"
         fi
     done
     rm -rf "$d_inc"
-    for dir in "$d_lib/.debug" "$d_lib/pkgconfig" "$d_bin/.debug"; do
+    for dir in "$d_lib/.debug" "$d_lib/pkgconfig" "$d_bin/.debug" "$d_vendor" \
+        "$destdir$prefix/share/glvnd"; do
         rmdir "$dir" 2>/dev/null || true
     done
     echo "uninstalled from $destdir$prefix"
@@ -94,6 +108,21 @@ ln -sfn "$soname" "$d_lib/libGLES_CM.so"
 for name in $compat; do
     ln -sfn "$soname" "$d_lib/$name"
 done
+if [ "$glvnd" = 1 ]; then
+    ln -sfn "$soname" "$d_lib/$vendor"
+    # library_path is absolute: glvnd dlopen()s it, and LIBDIR need not be on the loader's
+    # search path (PREFIX=/opt/...). The file is glvnd's format version 1.0.0.
+    mkdir -p "$d_vendor"
+    cat > "$d_vendor/$vendor_json" <<JSON
+{
+    "file_format_version" : "1.0.0",
+    "ICD" : {
+        "library_path" : "$libdir/$vendor"
+    }
+}
+JSON
+    chmod 644 "$d_vendor/$vendor_json"
+fi
 install_elf "$bin" "$d_bin" m3g-render
 chmod 755 "$d_bin/m3g-render"
 

@@ -2,8 +2,9 @@
 # Installs what is missing of Mesa's GLES 1.1 + EGL (llvmpipe and softpipe) with its
 # development headers and a C compiler, on Debian: the optional oracle of the differential
 # C tests and the drop-in test. libegl-dev and libgles-dev also bring the Khronos headers
-# (GLES/glext.h, EGL/eglext.h) that tests/headers.rs compares ours with. Idempotent; tests
-# without them say "skipped".
+# (GLES/glext.h, EGL/eglext.h) that tests/headers.rs compares ours with. libegl1 and libgles1
+# are glvnd's libEGL.so.1 and libGLESv1_CM.so.1, which tests/glvnd.rs drives our glvnd vendor
+# through. Idempotent; tests without them say "skipped".
 set -eu
 pkgs="libegl1 libgles1 libegl-mesa0 libgl1-mesa-dri libegl-dev libgles-dev gcc libc6-dev"
 missing=""

@@ -1,6 +1,6 @@
 //! The install step as a packager runs it: `scripts/install.sh PREFIX` with `DESTDIR` stages a
 //! stripped library (debug info split into `.debug`), its versioned SONAME and compatibility
-//! names, private headers, pkg-config files with the API versions, and `m3g-render`. The
+//! names, the glvnd vendor name and vendor file, private headers, pkg-config files with the API versions, and `m3g-render`. The
 //! README's example program, built with `pkg-config --cflags --libs glesv1_cm egl` against
 //! the staged tree alone, then runs and prints the right pixel; `--uninstall` removes every
 //! file again. Skipped (with a message) where pkg-config or binutils are not installed.
@@ -40,7 +40,8 @@ fn install(destdir: &Path, extra_env: &[(&str, &str)], args: &[&str]) -> String 
         .env("CARGO_TARGET_DIR", target_dir())
         .env("GLES_CM_LIB", lib_dir().join("libGLES_CM.so"))
         .env_remove("STRIP")
-        .env_remove("COMPAT");
+        .env_remove("COMPAT")
+        .env_remove("GLVND");
     for (k, v) in extra_env {
         cmd.env(k, v);
     }
@@ -119,12 +120,14 @@ fn staged_install_is_stripped_versioned_private_and_builds_the_readme_program() 
         "lib/.debug/libGLES_CM.so.1.debug",
         "lib/libEGL.so",
         "lib/libEGL.so.1",
+        "lib/libEGL_gles_cm.so.0",
         "lib/libGLES_CM.so",
         "lib/libGLES_CM.so.1",
         "lib/libGLESv1_CM.so",
         "lib/libGLESv1_CM.so.1",
         "lib/pkgconfig/egl.pc",
         "lib/pkgconfig/glesv1_cm.pc",
+        "share/glvnd/egl_vendor.d/50_gles_cm.json",
     ];
     let headers: Vec<String> = ["GLES", "EGL", "KHR"]
         .iter()
@@ -151,6 +154,7 @@ fn staged_install_is_stripped_versioned_private_and_builds_the_readme_program() 
         "libGLESv1_CM.so",
         "libEGL.so.1",
         "libEGL.so",
+        "libEGL_gles_cm.so.0",
     ] {
         assert_eq!(
             files[&format!("lib/{link}")],
@@ -158,6 +162,21 @@ fn staged_install_is_stripped_versioned_private_and_builds_the_readme_program() 
             "{link}"
         );
     }
+
+    // glvnd's vendor file names the vendor library where it will be installed (glvnd's
+    // format, as its own vendors' files have it).
+    let json =
+        std::fs::read_to_string(root.join("share/glvnd/egl_vendor.d/50_gles_cm.json")).unwrap();
+    assert!(
+        json.contains("\"file_format_version\" : \"1.0.0\""),
+        "{json}"
+    );
+    assert!(
+        json.contains(&format!(
+            "\"library_path\" : \"{PREFIX}/lib/libEGL_gles_cm.so.0\""
+        )),
+        "{json}"
+    );
 
     // Stripped, with the debug info beside it and linked.
     let lib = root.join("lib/libGLES_CM.so.1");
@@ -248,7 +267,14 @@ fn strip_0_and_compat_0_keep_the_debug_info_and_leave_out_the_compatibility_name
     let root = destdir.join(&PREFIX[1..]);
     let files = tree(&root);
     assert!(!files.keys().any(|k| k.contains(".debug")), "{files:?}");
-    assert!(!files.keys().any(|k| k.contains("libEGL")), "{files:?}");
+    assert!(!files.keys().any(|k| k.contains("libEGL.so")), "{files:?}");
+    assert!(
+        !files.keys().any(|k| k.contains("libGLESv1_CM")),
+        "{files:?}"
+    );
+    // What a machine with glvnd installs: the vendor, not the names glvnd owns.
+    assert_eq!(files["lib/libEGL_gles_cm.so.0"], "-> libGLES_CM.so.1");
+    assert!(files.contains_key("share/glvnd/egl_vendor.d/50_gles_cm.json"));
     assert!(sections(&root.join("lib/libGLES_CM.so.1")).contains(".debug_info"));
     // Another implementation's libEGL.so.1 in the way is not ours to uninstall.
     std::fs::write(root.join("lib/libEGL.so.1"), b"someone else's").unwrap();
@@ -257,4 +283,21 @@ fn strip_0_and_compat_0_keep_the_debug_info_and_leave_out_the_compatibility_name
         tree(&destdir).into_keys().collect::<Vec<_>>(),
         [format!("{}/lib/libEGL.so.1", &PREFIX[1..])]
     );
+}
+
+#[test]
+fn glvnd_0_leaves_out_the_vendor() {
+    if let Some(t) = tools_missing() {
+        println!("skipped: {t} is not installed");
+        return;
+    }
+    let destdir = lib_dir().join("install-test-noglvnd");
+    let _ = std::fs::remove_dir_all(&destdir);
+    install(&destdir, &[("STRIP", "0"), ("GLVND", "0")], &[]);
+    let files = tree(&destdir.join(&PREFIX[1..]));
+    assert!(!files.keys().any(|k| k.contains("glvnd")), "{files:?}");
+    assert!(!files.keys().any(|k| k.contains("gles_cm.so")), "{files:?}");
+    assert_eq!(files["lib/libEGL.so.1"], "-> libGLES_CM.so.1");
+    install(&destdir, &[], &["--uninstall"]);
+    assert!(tree(&destdir).is_empty());
 }

@@ -636,6 +636,21 @@ macro_rules! proc_table {
 // build.rs lists every exported `egl*` function, so the table cannot miss one.
 include!(concat!(env!("OUT_DIR"), "/egl_proc_table.rs"));
 
+/// The address of any `gl*` or `egl*` function of this library called `procname`, extensions
+/// included; `None` for other names and for null. Shared by eglGetProcAddress and glvnd's
+/// `getProcAddress` (`super::glvnd`).
+///
+/// # Safety
+/// `procname` is null or a NUL-terminated string.
+pub(crate) unsafe fn proc_address_c(procname: *const c_char) -> Option<*const c_void> {
+    if procname.is_null() {
+        return None;
+    }
+    // SAFETY: non-null and NUL-terminated by the caller's contract.
+    let name = unsafe { CStr::from_ptr(procname) }.to_str().ok()?;
+    egl_proc_address(name).or_else(|| crate::gles::ffi::proc_address(name))
+}
+
 /// Any `gl*` or `egl*` function of this library, extensions included; NULL for other names.
 ///
 /// # Safety
@@ -645,15 +660,8 @@ pub unsafe extern "C" fn eglGetProcAddress(
     procname: *const c_char,
 ) -> __eglMustCastToProperFunctionPointerType {
     call(None, || {
-        if procname.is_null() {
-            return Ok(None);
-        }
-        // SAFETY: non-null and NUL-terminated by the caller's contract.
-        let name = unsafe { CStr::from_ptr(procname) };
-        let Ok(name) = name.to_str() else {
-            return Ok(None);
-        };
-        let addr = egl_proc_address(name).or_else(|| crate::gles::ffi::proc_address(name));
+        // SAFETY: forwarded to the caller's contract.
+        let addr = unsafe { proc_address_c(procname) };
         // SAFETY: the address is that of an `extern "C"` function of this library; C casts
         // the generic pointer back to the function's real type before calling it.
         Ok(
