@@ -1,6 +1,6 @@
 /*
- * egl_config.c: the 18 configs (RGB565/RGB888/RGBA8888 x depth 0/16/24 x stencil 0/8),
- * every table 3.1 attribute, eglGetConfigs and eglChooseConfig's matching and sorting, and
+ * egl_config.c: the 36 configs (RGB565/RGB888/RGBA8888 x depth 0/16/24 x stencil 0/8 x
+ * samples 0/4; ids 19-36 repeat 1-18 with EGL_SAMPLE_BUFFERS 1), every table 3.1 attribute, eglGetConfigs and eglChooseConfig's matching and sorting, and
  * their errors.
  * ct:no-diff (the config list is this implementation's)
  */
@@ -25,25 +25,25 @@ static EGLint choose(const EGLint *attribs, EGLConfig *out, EGLint size)
 
 int main(void)
 {
-    EGLConfig configs[32];
+    EGLConfig configs[64];
     EGLint n = -1, i;
 
     dpy = eglGetDisplay(EGL_DEFAULT_DISPLAY);
-    CHECK(!eglGetConfigs(dpy, configs, 32, &n));
+    CHECK(!eglGetConfigs(dpy, configs, 64, &n));
     CHECK_EGL(EGL_NOT_INITIALIZED);
     CHECK(eglInitialize(dpy, NULL, NULL));
 
-    CHECK(eglGetConfigs(dpy, NULL, 0, &n) && n == 18);
+    CHECK(eglGetConfigs(dpy, NULL, 0, &n) && n == 36);
     CHECK(eglGetConfigs(dpy, configs, 5, &n) && n == 5);
-    CHECK(eglGetConfigs(dpy, configs, 32, &n) && n == 18);
-    CHECK(!eglGetConfigs(dpy, configs, 32, NULL));
+    CHECK(eglGetConfigs(dpy, configs, 64, &n) && n == 36);
+    CHECK(!eglGetConfigs(dpy, configs, 64, NULL));
     CHECK_EGL(EGL_BAD_PARAMETER);
-    CHECK(!eglGetConfigs((EGLDisplay)(size_t)99, configs, 32, &n));
+    CHECK(!eglGetConfigs((EGLDisplay)(size_t)99, configs, 64, &n));
     CHECK_EGL(EGL_BAD_DISPLAY);
 
-    for (i = 0; i < 18; ++i) {
+    for (i = 0; i < 36; ++i) {
         EGLConfig c = configs[i];
-        EGLint color = i / 6, depth = (i / 2) % 3, stencil = i % 2;
+        EGLint color = i % 18 / 6, depth = (i / 2) % 3, stencil = i % 2, ms = i / 18;
         EGLint r = attr(c, EGL_RED_SIZE), g = attr(c, EGL_GREEN_SIZE);
         EGLint b = attr(c, EGL_BLUE_SIZE), a = attr(c, EGL_ALPHA_SIZE);
         CHECK(attr(c, EGL_CONFIG_ID) == i + 1);
@@ -69,8 +69,8 @@ int main(void)
         CHECK(attr(c, EGL_NATIVE_RENDERABLE) == EGL_TRUE);
         CHECK(attr(c, EGL_NATIVE_VISUAL_ID) == color + 1); /* EGL_MEMORY_* */
         CHECK(attr(c, EGL_NATIVE_VISUAL_TYPE) == EGL_NONE);
-        CHECK(attr(c, EGL_SAMPLE_BUFFERS) == 0);
-        CHECK(attr(c, EGL_SAMPLES) == 0);
+        CHECK(attr(c, EGL_SAMPLE_BUFFERS) == ms);
+        CHECK(attr(c, EGL_SAMPLES) == ms * 4);
         CHECK(attr(c, EGL_SURFACE_TYPE) == (EGL_PBUFFER_BIT | EGL_PIXMAP_BIT | EGL_WINDOW_BIT |
                                            EGL_SWAP_BEHAVIOR_PRESERVED_BIT));
         CHECK(attr(c, EGL_TRANSPARENT_TYPE) == EGL_NONE);
@@ -83,7 +83,7 @@ int main(void)
         EGLint v = 77;
         CHECK(!eglGetConfigAttrib(dpy, configs[0], 0x1234, &v) && v == 77);
         CHECK_EGL(EGL_BAD_ATTRIBUTE);
-        CHECK(!eglGetConfigAttrib(dpy, (EGLConfig)(size_t)19, EGL_RED_SIZE, &v));
+        CHECK(!eglGetConfigAttrib(dpy, (EGLConfig)(size_t)37, EGL_RED_SIZE, &v));
         CHECK_EGL(EGL_BAD_CONFIG);
         CHECK(!eglGetConfigAttrib(dpy, NULL, EGL_RED_SIZE, &v));
         CHECK_EGL(EGL_BAD_CONFIG);
@@ -91,14 +91,15 @@ int main(void)
         CHECK_EGL(EGL_BAD_DISPLAY);
     }
 
-    /* Defaults: window-capable ES configs, smallest buffers first. */
+    /* Defaults: window-capable ES configs, smallest buffers first, then fewer samples. */
     {
-        EGLConfig out[32];
-        n = choose(NULL, out, 32);
-        CHECK(n == 18);
-        CHECK(n == 18 && out[0] == configs[0] && out[1] == configs[1] && out[6] == configs[6]);
+        EGLConfig out[64];
+        n = choose(NULL, out, 64);
+        CHECK(n == 36);
+        CHECK(n == 36 && out[0] == configs[0] && out[1] == configs[1] && out[6] == configs[18] &&
+              out[12] == configs[6]);
         n = choose(NULL, NULL, 0);
-        CHECK(n == 18);
+        CHECK(n == 36);
     }
     /* Larger total of requested color bits first. */
     {
@@ -107,16 +108,18 @@ int main(void)
                                       EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 16, EGL_NONE};
         static const EGLint any_depth[] = {EGL_DEPTH_SIZE, EGL_DONT_CARE, EGL_NONE};
         static const EGLint deep[] = {EGL_DEPTH_SIZE, 17, EGL_STENCIL_SIZE, 1, EGL_NONE};
-        EGLConfig out[32];
-        n = choose(red, out, 32);
-        CHECK(n == 18 && attr(out[0], EGL_CONFIG_ID) == 7 && attr(out[6], EGL_CONFIG_ID) == 13 &&
-              attr(out[12], EGL_CONFIG_ID) == 1);
-        n = choose(rgba, out, 32);
-        CHECK(n == 4 && attr(out[0], EGL_CONFIG_ID) == 15 && attr(out[3], EGL_CONFIG_ID) == 18);
-        n = choose(any_depth, out, 32);
-        CHECK(n == 18);
-        n = choose(deep, out, 32);
-        CHECK(n == 3 && attr(out[0], EGL_CONFIG_ID) == 6 && attr(out[2], EGL_CONFIG_ID) == 18);
+        EGLConfig out[64];
+        n = choose(red, out, 64);
+        CHECK(n == 36 && attr(out[0], EGL_CONFIG_ID) == 7 && attr(out[6], EGL_CONFIG_ID) == 25 &&
+              attr(out[12], EGL_CONFIG_ID) == 13 && attr(out[24], EGL_CONFIG_ID) == 1);
+        n = choose(rgba, out, 64);
+        CHECK(n == 8 && attr(out[0], EGL_CONFIG_ID) == 15 && attr(out[3], EGL_CONFIG_ID) == 18 &&
+              attr(out[4], EGL_CONFIG_ID) == 33);
+        n = choose(any_depth, out, 64);
+        CHECK(n == 36);
+        n = choose(deep, out, 64);
+        CHECK(n == 6 && attr(out[0], EGL_CONFIG_ID) == 6 && attr(out[1], EGL_CONFIG_ID) == 24 &&
+              attr(out[5], EGL_CONFIG_ID) == 36);
         n = choose(deep, out, 1);
         CHECK(n == 1 && attr(out[0], EGL_CONFIG_ID) == 6);
     }
@@ -140,22 +143,23 @@ int main(void)
         static const EGLint swap[] = {EGL_MAX_SWAP_INTERVAL, 1, EGL_MIN_SWAP_INTERVAL, 0,
                                       EGL_TRANSPARENT_TYPE, EGL_NONE, EGL_NONE};
         static const EGLint swap2[] = {EGL_MAX_SWAP_INTERVAL, 2, EGL_NONE};
-        EGLConfig out[32];
-        CHECK(choose(level, out, 32) == 0);
-        CHECK(choose(vg, out, 32) == 0);
-        CHECK(choose(es2, out, 32) == 0);
-        CHECK(choose(surf, out, 32) == 18);
-        CHECK(choose(lum, out, 32) == 0);
-        CHECK(choose(slow, out, 32) == 0);
-        CHECK(choose(tex, out, 32) == 6);
-        CHECK(choose(ms, out, 32) == 0);
-        n = choose(byid, out, 32);
+        EGLConfig out[64];
+        CHECK(choose(level, out, 64) == 0);
+        CHECK(choose(vg, out, 64) == 0);
+        CHECK(choose(es2, out, 64) == 0);
+        CHECK(choose(surf, out, 64) == 36);
+        CHECK(choose(lum, out, 64) == 0);
+        CHECK(choose(slow, out, 64) == 0);
+        CHECK(choose(tex, out, 64) == 12);
+        n = choose(ms, out, 64);
+        CHECK(n == 18 && attr(out[0], EGL_CONFIG_ID) == 19 && attr(out[0], EGL_SAMPLES) == 4);
+        n = choose(byid, out, 64);
         CHECK(n == 1 && attr(out[0], EGL_CONFIG_ID) == 5);
-        CHECK(choose(noid, out, 32) == 0);
-        CHECK(choose(ignored, out, 32) == 18);
-        CHECK(choose(conformant, out, 32) == 18);
-        CHECK(choose(swap, out, 32) == 18);
-        CHECK(choose(swap2, out, 32) == 0);
+        CHECK(choose(noid, out, 64) == 0);
+        CHECK(choose(ignored, out, 64) == 36);
+        CHECK(choose(conformant, out, 64) == 36);
+        CHECK(choose(swap, out, 64) == 36);
+        CHECK(choose(swap2, out, 64) == 0);
     }
     /* Errors. */
     {

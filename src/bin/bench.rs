@@ -13,6 +13,8 @@
 //! comma list; a prefix such as `fill` or `tris` matches a family) limits the scenes,
 //! `--frames N` sets the timed frames per renderer, `--diff` writes difference images and
 //! `--markdown FILE` writes the whole report (machine, tables, targets) as Markdown.
+//! `--msaa` measures only our library, on single-sample and 4-sample pbuffers
+//! (`EGL_SAMPLES` 4), and adds a table of 4× MSAA's cost per scene.
 //! Internally `bench --child ours|mesa|m3g …` is the measuring process (`bench/worker.rs`).
 //! `bench/scene.rs` and `bench/child.rs` hold the earlier three-scene benchmark, which the
 //! `accuracy` report still builds on.
@@ -64,6 +66,8 @@ struct Renderer {
     threads: usize,
     /// `None` for peers (they are given DONT_CARE) and the M3G scene.
     mode: Option<Mode>,
+    /// `EGL_SAMPLES` of the pbuffer config: 0, or 4 under `--msaa`.
+    samples: u32,
 }
 
 impl Renderer {
@@ -74,6 +78,7 @@ impl Renderer {
             format!("{all}t")
         };
         match self.kind {
+            Kind::Ours if self.samples > 0 => format!("ours {t} msaa{}", self.samples),
             Kind::Ours => format!("ours {t}"),
             Kind::Llvmpipe => format!("llvmpipe {t}"),
             Kind::Softpipe => "softpipe".into(),
@@ -86,17 +91,35 @@ impl Renderer {
             Kind::Llvmpipe => format!("llvmpipe-{}t", self.threads),
             Kind::Softpipe => "softpipe".into(),
         };
-        match self.mode {
+        let base = match self.mode {
             Some(m) => format!("{base}-{}", m.name().to_lowercase()),
             None => base,
+        };
+        match self.samples {
+            0 => base,
+            n => format!("{base}-msaa{n}"),
         }
     }
 }
 
-fn renderers(class: Class, m3g: bool, all: usize) -> Vec<Renderer> {
+fn renderers(class: Class, m3g: bool, all: usize, msaa: bool) -> Vec<Renderer> {
     let mut threads = vec![1, all];
     threads.dedup();
     let mut out = Vec::new();
+    if msaa {
+        // Our library only, DONT_CARE, single-sample beside 4× MSAA.
+        for &t in &threads {
+            for samples in [0, 4] {
+                out.push(Renderer {
+                    kind: Kind::Ours,
+                    threads: t,
+                    mode: Some(Mode::DontCare),
+                    samples,
+                });
+            }
+        }
+        return out;
+    }
     let modes: Vec<Option<Mode>> = if m3g {
         vec![None]
     } else if class == Class::Main {
@@ -110,6 +133,7 @@ fn renderers(class: Class, m3g: bool, all: usize) -> Vec<Renderer> {
                 kind: Kind::Ours,
                 threads: t,
                 mode,
+                samples: 0,
             });
         }
     }
@@ -121,6 +145,7 @@ fn renderers(class: Class, m3g: bool, all: usize) -> Vec<Renderer> {
             kind: Kind::Llvmpipe,
             threads: t,
             mode: None,
+            samples: 0,
         });
     }
     if class == Class::Main {
@@ -128,6 +153,7 @@ fn renderers(class: Class, m3g: bool, all: usize) -> Vec<Renderer> {
             kind: Kind::Softpipe,
             threads: 1,
             mode: None,
+            samples: 0,
         });
     }
     out
@@ -298,6 +324,8 @@ struct Ctx {
     corpus: PathBuf,
     frames: usize,
     diff: bool,
+    /// `--msaa`: our library only, single-sample beside 4× MSAA.
+    msaa: bool,
     all: usize,
 }
 
@@ -320,7 +348,8 @@ fn command(ctx: &Ctx, scene: &str, r: &Renderer) -> Command {
         }
         Kind::Ours => {
             cmd.args(["--child", "ours", "--mode", mode.name(), "--lib"])
-                .arg(&ctx.ours);
+                .arg(&ctx.ours)
+                .args(["--samples", &r.samples.to_string()]);
         }
         Kind::Llvmpipe | Kind::Softpipe => {
             cmd.args(["--child", "mesa", "--mode", mode.name()])
@@ -357,7 +386,7 @@ fn median(v: &[f64]) -> Option<f64> {
 /// Measures every renderer of one scene, interleaved, and compares each image with
 /// `reference`.
 fn run_scene(ctx: &Ctx, name: &str, class: Class, memset: bool, reference: &Target) -> Vec<Row> {
-    let list = renderers(class, is_m3g(name), ctx.all);
+    let list = renderers(class, is_m3g(name), ctx.all, ctx.msaa);
     let mut children: Vec<Option<Child>> = Vec::new();
     let mut failures: Vec<Option<Outcome>> = Vec::new();
     for r in &list {
@@ -553,7 +582,13 @@ fn child_main(args: &[String]) -> ExitCode {
         let mode = get("--mode")
             .and_then(|m| Mode::parse(&m))
             .unwrap_or(Mode::DontCare);
-        worker::run(&worker::Job { which, mode, scene })
+        let samples = get("--samples").and_then(|n| n.parse().ok()).unwrap_or(0);
+        worker::run(&worker::Job {
+            which,
+            mode,
+            scene,
+            samples,
+        })
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -612,6 +647,7 @@ fn main() -> ExitCode {
     let mut frames = FRAMES;
     let mut markdown: Option<PathBuf> = None;
     let mut diff = false;
+    let mut msaa = false;
     let mut it = args.iter().skip(1);
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -629,9 +665,10 @@ fn main() -> ExitCode {
             },
             "--markdown" => markdown = it.next().map(PathBuf::from),
             "--diff" => diff = true,
+            "--msaa" => msaa = true,
             "--help" | "-h" => {
                 println!(
-                    "usage: bench [--scene NAME[,NAME…]]… [--frames N] [--diff] [--markdown FILE]\n\
+                    "usage: bench [--scene NAME[,NAME…]]… [--frames N] [--diff] [--msaa] [--markdown FILE]\n\
                      scenes: {} {M3G} {M3G_CORPUS}",
                     NAMES.join(" ")
                 );
@@ -689,6 +726,7 @@ fn main() -> ExitCode {
         corpus,
         frames,
         diff,
+        msaa,
         all: std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
     let wanted = |name: &str| {
@@ -716,7 +754,8 @@ fn main() -> ExitCode {
             .map_or(scenes.len(), |i| i + 1),
         M3G_CORPUS.to_owned(),
     );
-    for name in scenes.iter().filter(|n| wanted(n)) {
+    // The M3G scenes render through Graphics3D, which has no multisampled targets.
+    for name in scenes.iter().filter(|n| wanted(n) && !(msaa && is_m3g(n))) {
         let t0 = Instant::now();
         let (reference, class, memset, summary) = if name == M3G_CORPUS {
             match worker::corpus_files(&ctx.corpus).and_then(|files| {
@@ -807,6 +846,9 @@ fn main() -> ExitCode {
     for t in &tables {
         print!("{}", t.text());
     }
+    if msaa {
+        print!("{}", msaa_table(&rows, ctx.all).text());
+    }
     println!();
     for line in report.notes() {
         println!("{line}");
@@ -820,6 +862,36 @@ fn main() -> ExitCode {
         eprintln!("wrote {}", path.display());
     }
     ExitCode::SUCCESS
+}
+
+/// 4× MSAA against single-sample, per scene and thread count: both medians and their ratio.
+fn msaa_table(rows: &[Row], all: usize) -> Table {
+    let mut t = Table::new(
+        "4x MSAA cost (ours, DONT_CARE; scenes chosen with --scene)",
+        &["scene", "threads", "1x ms", "4x ms", "4x / 1x"],
+        1,
+    );
+    for r in rows.iter().filter(|r| r.renderer.samples > 0) {
+        let single = rows.iter().find(|s| {
+            s.scene == r.scene
+                && s.renderer.samples == 0
+                && s.renderer.threads == r.renderer.threads
+        });
+        let ms = |v: Option<f64>| v.map_or("-".to_owned(), |v| format!("{v:.2}"));
+        let one = single.and_then(Row::ms);
+        t.rows.push(vec![
+            r.scene.clone(),
+            if r.renderer.threads == 1 {
+                "1".into()
+            } else {
+                all.to_string()
+            },
+            ms(one),
+            ms(r.ms()),
+            fmt_ratio(r.ms(), one),
+        ]);
+    }
+    t
 }
 
 fn is_fill(name: &str) -> bool {

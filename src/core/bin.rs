@@ -105,6 +105,9 @@ pub struct Frame {
     keys: Vec<FragmentKey>,
     bands: Vec<Vec<Command>>,
     pending: usize,
+    /// For a multisampled target, one frame per sample plane ([`super::multisample`]):
+    /// primitives are recorded there, and this frame only forwards.
+    planes: Vec<Frame>,
 }
 
 impl Frame {
@@ -119,12 +122,27 @@ impl Frame {
             keys: Vec::new(),
             bands: vec![Vec::new(); height.div_ceil(BAND_ROWS) as usize],
             pending: 0,
+            planes: Vec::new(),
         }
+    }
+
+    /// An empty frame for `target`, with a frame per sample plane when it is multisampled.
+    pub fn for_target(target: &Target) -> Frame {
+        let (w, h, f) = (target.width(), target.height(), target.format());
+        let mut frame = Frame::new(w, h, f);
+        frame.planes = (0..target.samples()).map(|_| Frame::new(w, h, f)).collect();
+        frame
+    }
+
+    /// The per-sample frames: empty unless the frame is for a multisampled target.
+    pub fn planes_mut(&mut self) -> &mut [Frame] {
+        &mut self.planes
     }
 
     /// True when `target` is the kind of target this frame records for.
     pub fn fits(&self, target: &Target) -> bool {
         (self.width, self.height, self.format) == (target.width(), target.height(), target.format())
+            && self.planes.len() == target.samples() as usize
     }
 
     pub fn format(&self) -> TargetFormat {
@@ -136,12 +154,12 @@ impl Frame {
     }
 
     pub fn is_empty(&self) -> bool {
-        self.pending == 0
+        self.pending == 0 && self.planes.iter().all(Frame::is_empty)
     }
 
     /// True when the frame holds enough work that it should be flushed before more is added.
     pub fn is_full(&self) -> bool {
-        self.prims.len() >= MAX_PENDING
+        self.prims.len() >= MAX_PENDING || self.planes.iter().any(Frame::is_full)
     }
 
     /// Registers the fragment state for the primitives that follow, returning its number.
@@ -175,14 +193,32 @@ impl Frame {
     }
 
     pub fn clear_color(&mut self, rect: Rect, word: u32, keep: u32) {
+        if !self.planes.is_empty() {
+            for p in &mut self.planes {
+                p.clear_color(rect, word, keep);
+            }
+            return;
+        }
         self.record(rect.y0, rect.y1, Command::ClearColor { rect, word, keep });
     }
 
     pub fn clear_depth(&mut self, rect: Rect, value: u32) {
+        if !self.planes.is_empty() {
+            for p in &mut self.planes {
+                p.clear_depth(rect, value);
+            }
+            return;
+        }
         self.record(rect.y0, rect.y1, Command::ClearDepth { rect, value });
     }
 
     pub fn clear_stencil(&mut self, rect: Rect, value: u8, mask: u8) {
+        if !self.planes.is_empty() {
+            for p in &mut self.planes {
+                p.clear_stencil(rect, value, mask);
+            }
+            return;
+        }
         self.record(
             rect.y0,
             rect.y1,
@@ -197,6 +233,15 @@ impl Frame {
             return;
         }
         debug_assert!(self.fits(target));
+        if !self.planes.is_empty() {
+            // Plane by plane, each on all threads, then the resolve: the same pixels for
+            // any thread count.
+            for (frame, plane) in self.planes.iter_mut().zip(target.sample_planes_mut()) {
+                frame.flush(plane, threads);
+            }
+            target.resolve();
+            return;
+        }
         let this = &*self;
         let mut bands: Vec<(BandMut<'_>, &[Command])> = target
             .bands_mut(BAND_ROWS)

@@ -16,6 +16,7 @@
 
 use std::sync::Arc;
 
+use super::multisample::SamplePass;
 use super::raster::Span;
 use super::setup::{Shading, TexPlanes};
 use super::state::{
@@ -466,6 +467,9 @@ pub struct FragmentKey {
     stencil: Option<StencilTest>,
     stencil_writemask: u8,
     alpha: Option<AlphaTest>,
+    /// A sample plane's alpha to coverage and alpha to one (ES 1.1 §4.1.3), present only
+    /// when either is on.
+    sample: Option<SamplePass>,
     blend: Option<Blend>,
     logic_op: Option<LogicOp>,
     /// Ordered dithering, only where it changes something: channels narrower than 8 bits.
@@ -504,6 +508,9 @@ impl FragmentKey {
             stencil,
             stencil_writemask: state.stencil_writemask as u8,
             alpha: state.alpha_test,
+            sample: state
+                .sample
+                .filter(|s| s.alpha_min.is_some() || s.alpha_to_one),
             blend,
             logic_op,
             dither,
@@ -514,7 +521,11 @@ impl FragmentKey {
         };
         key.route = if key.stencil.is_none() && keep == u32::MAX && !key.depth_write {
             Route::Nothing
-        } else if key.alpha.is_some() || key.stencil.is_some() || key.logic_op.is_some() {
+        } else if key.alpha.is_some()
+            || key.stencil.is_some()
+            || key.logic_op.is_some()
+            || key.sample.is_some()
+        {
             Route::General
         } else if let Some(stage) = &key.tex {
             // Cube maps, crossbar environments and anisotropic filtering run the general
@@ -734,6 +745,16 @@ fn general<'a>(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'a>)
             src[3] *= share;
         } else if let Some(tex) = &mut tex {
             src = tex.apply(i, src);
+        }
+        if let Some(s) = k.sample {
+            // §4.1.3 comes before the alpha test: a fragment whose alpha leaves this
+            // plane's sample out of the mask stops here, and alpha to one feeds the rest.
+            if s.alpha_min.is_some_and(|min| unorm8(src[3]) < min) {
+                continue;
+            }
+            if s.alpha_to_one {
+                src[3] = 1.0;
+            }
         }
         if let Some(a) = k.alpha {
             // Both sides at 8-bit precision, so a reference equal to a vertex alpha compares

@@ -10,6 +10,7 @@ pub mod bin;
 pub mod clip;
 pub mod fixed;
 pub mod fragment;
+pub mod multisample;
 pub mod raster;
 pub mod reference;
 pub mod setup;
@@ -43,6 +44,29 @@ pub struct OutOfMemory;
 /// between pieces.
 const PIECE: usize = 2048;
 
+/// [`record_flushing`] for a multisampled target: the draw once per sample plane the sample
+/// coverage mask keeps, moved to the plane's sample position ([`multisample`]). A plane's
+/// frame is not flushed during the draw: the caller's `flush` is for the whole frame.
+fn record_samples(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    frame: &mut Frame,
+) -> Result<(), OutOfMemory> {
+    let mut plane_state = state.clone();
+    for (pass, plane) in state
+        .multisample
+        .passes()
+        .into_iter()
+        .zip(frame.planes_mut())
+    {
+        if let Some(pass) = pass {
+            plane_state.sample = Some(pass);
+            record_flushing(&plane_state, draw, plane, &mut |_| {})?;
+        }
+    }
+    Ok(())
+}
+
 /// Transforms, clips and sets up `draw` with `state`, recording its primitives in `frame`
 /// (for a target of `frame`'s size and format) for a later [`Frame::flush`].
 pub fn record(
@@ -66,6 +90,9 @@ pub fn record_flushing(
     let bounds = state.pixel_bounds(frame.bounds());
     if bounds.is_empty() {
         return Ok(());
+    }
+    if !frame.planes_mut().is_empty() {
+        return record_samples(state, draw, frame);
     }
     let fragment = fragment::FragmentKey::new(state, frame.format());
     let mut key = frame.key(fragment.clone());
@@ -211,7 +238,7 @@ pub fn render(
     draw: &DrawCall<'_>,
     target: &mut Target,
 ) -> Result<(), OutOfMemory> {
-    let mut frame = Frame::new(target.width(), target.height(), target.format());
+    let mut frame = Frame::for_target(target);
     record(state, draw, &mut frame)?;
     frame.flush(target, bin::thread_count());
     Ok(())
@@ -283,6 +310,131 @@ mod tests {
             ..positions_call(prim, &pb, xyz.len() / 3)
         };
         render(state, &call, t).unwrap();
+    }
+
+    fn ms_target(w: u32, h: u32) -> Target {
+        let f = target(1, 1).format();
+        Target::try_new_multisample(w, h, f, true).unwrap()
+    }
+
+    /// A rectangle x in [0, 2.5], y in [0, 8]: pixel column 2 is half covered.
+    const HALF_EDGE: [f32; 18] = [
+        0.0, 0.0, 0.0, 2.5, 0.0, 0.0, 2.5, 8.0, 0.0, 0.0, 0.0, 0.0, 2.5, 8.0, 0.0, 0.0, 8.0, 0.0,
+    ];
+
+    fn row(t: &Target, y: u32) -> Vec<[u8; 4]> {
+        (0..t.width()).map(|x| t.pixel(x, y)).collect()
+    }
+
+    #[test]
+    fn multisampled_edges_resolve_to_the_covered_share() {
+        let mut t = ms_target(8, 8);
+        assert_eq!(t.samples(), 4);
+        draw(
+            &pixel_state(8, 8),
+            &mut t,
+            &HALF_EDGE,
+            [1.0; 4],
+            Primitive::Triangles,
+        );
+        // Samples at x + 0.125 and x + 0.375 are left of 2.5: two of four.
+        let r = row(&t, 3);
+        assert_eq!(&r[..4], &[[255; 4], [255; 4], [128; 4], [0; 4]]);
+        // Every row alike, and only the resolved edge column is partial.
+        assert!((0..8).all(|y| row(&t, y) == r));
+    }
+
+    #[test]
+    fn multisample_disabled_matches_a_single_sample_target_bit_for_bit() {
+        let mut s = pixel_state(16, 16);
+        s.multisample.enabled = false;
+        let xyz = [0.3, 0.2, 0.0, 15.1, 3.7, 0.0, 6.4, 14.9, 0.0];
+        let (mut ms, mut single) = (ms_target(16, 16), target(16, 16));
+        draw(
+            &s,
+            &mut ms,
+            &xyz,
+            [0.9, 0.4, 0.2, 1.0],
+            Primitive::Triangles,
+        );
+        draw(
+            &s,
+            &mut single,
+            &xyz,
+            [0.9, 0.4, 0.2, 1.0],
+            Primitive::Triangles,
+        );
+        assert_eq!(ms.color(), single.color());
+        s.multisample.enabled = true;
+        let mut aa = ms_target(16, 16);
+        draw(
+            &s,
+            &mut aa,
+            &xyz,
+            [0.9, 0.4, 0.2, 1.0],
+            Primitive::Triangles,
+        );
+        assert_ne!(aa.color(), single.color());
+    }
+
+    #[test]
+    fn sample_coverage_and_alpha_masks_select_samples() {
+        let mut s = pixel_state(8, 8);
+        // Value 0.5: samples 0 and 1; inverted: 2 and 3 (of which 2 is left of the edge).
+        s.multisample.coverage = Some((0.5, false));
+        let mut t = ms_target(8, 8);
+        draw(&s, &mut t, &HALF_EDGE, [1.0; 4], Primitive::Triangles);
+        assert_eq!(&row(&t, 0)[..4], &[[128; 4], [128; 4], [64; 4], [0; 4]]);
+        s.multisample.coverage = Some((0.5, true));
+        let mut t = ms_target(8, 8);
+        draw(&s, &mut t, &HALF_EDGE, [1.0; 4], Primitive::Triangles);
+        assert_eq!(&row(&t, 0)[..4], &[[128; 4], [128; 4], [64; 4], [0; 4]]);
+        // Alpha to coverage: alpha 0.5 (128) covers samples 0 and 1.
+        s.multisample.coverage = None;
+        s.multisample.alpha_to_coverage = true;
+        let mut t = ms_target(8, 8);
+        draw(
+            &s,
+            &mut t,
+            &HALF_EDGE,
+            [1.0, 1.0, 1.0, 0.5],
+            Primitive::Triangles,
+        );
+        assert_eq!(row(&t, 0)[0], [128, 128, 128, 64]);
+        assert_eq!(row(&t, 0)[2], [64, 64, 64, 32]);
+        // Alpha to one: the covered samples store alpha 1.
+        s.multisample.alpha_to_one = true;
+        let mut t = ms_target(8, 8);
+        draw(
+            &s,
+            &mut t,
+            &HALF_EDGE,
+            [1.0, 1.0, 1.0, 0.5],
+            Primitive::Triangles,
+        );
+        assert_eq!(row(&t, 0)[0], [128; 4]);
+    }
+
+    #[test]
+    fn multisampled_frames_are_the_same_for_any_thread_count() {
+        let s = pixel_state(64, 64);
+        let mut rng = Lcg(7);
+        let xyz: Vec<f32> = (0..90)
+            .map(|i| if i % 3 == 2 { 0.0 } else { rng.next() * 64.0 })
+            .collect();
+        let pb = bytes(&xyz);
+        let call = positions_call(Primitive::Triangles, &pb, 30);
+        let images: Vec<Vec<u32>> = [1, 2, 4]
+            .iter()
+            .map(|&threads| {
+                let mut t = ms_target(64, 64);
+                let mut frame = Frame::for_target(&t);
+                record(&s, &call, &mut frame).unwrap();
+                frame.flush(&mut t, threads);
+                t.color().to_vec()
+            })
+            .collect();
+        assert!(images.windows(2).all(|w| w[0] == w[1]));
     }
 
     fn count(t: &Target, rgba: [u8; 4]) -> usize {

@@ -316,6 +316,9 @@ pub fn triangle(
     let (hw, hh) = (vp.width as f64 * 0.5, vp.height as f64 * 0.5);
     let (cx, cy) = (vp.x as f64 + hw, vp.y as f64 + hh);
     let (n, f) = (state.depth_range[0] as f64, state.depth_range[1] as f64);
+    // In a sample plane, the primitive moves so that pixel centers sample it at the
+    // plane's sample position (exact: the offsets are on the subpixel grid).
+    let [ox, oy] = state.sample.map_or([0, 0], |s| s.offset.map(|o| o as i64));
     let mut win = [(0i64, 0i64); 3];
     let mut z = [0f64; 3];
     let mut inv_w = [0f64; 3];
@@ -328,7 +331,10 @@ pub fn triangle(
         let g = clip::GUARD as f64;
         let x = (p.x as f64 * iw).clamp(-g, g) * hw + cx;
         let y = (p.y as f64 * iw).clamp(-g, g) * hh + cy;
-        win[i] = (round_i64(x * ONE as f64), round_i64(y * ONE as f64));
+        win[i] = (
+            round_i64(x * ONE as f64) - ox,
+            round_i64(y * ONE as f64) - oy,
+        );
         z[i] = ((p.z as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
         inv_w[i] = iw;
     }

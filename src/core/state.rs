@@ -437,6 +437,11 @@ pub struct RenderState {
     pub fog: Option<super::texenv::Fog>,
     /// `GL_POINT_SPRITE_OES`.
     pub point_sprite: bool,
+    /// `GL_MULTISAMPLE` and the sample mask state; used only by multisampled targets.
+    pub multisample: super::multisample::Multisample,
+    /// Set by the core while recording a draw into one sample plane of a multisampled
+    /// target; `None` everywhere else (and then nothing changes).
+    pub sample: Option<super::multisample::SamplePass>,
 }
 
 impl RenderState {
@@ -485,6 +490,8 @@ impl RenderState {
             textures: Default::default(),
             fog: None,
             point_sprite: false,
+            multisample: Default::default(),
+            sample: None,
         }
     }
 

@@ -8,6 +8,8 @@
 //! alpha keep 255.
 //! One storage layout means one set of span routines; the format only changes the quantizer.
 
+use super::multisample;
+
 /// The color formats a target can have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ColorFormat {
@@ -171,6 +173,10 @@ pub struct Target {
     color: Vec<u32>,
     depth: Vec<u32>,
     stencil: Vec<u8>,
+    /// The sample planes of a multisampled target ([`super::multisample`]), empty for a
+    /// single-sample one. With planes, `color` holds their resolve, and `depth` and
+    /// `stencil` are unused.
+    samples: Vec<Target>,
 }
 
 /// Channel write mask for color clears and fragment writes.
@@ -265,7 +271,60 @@ impl Target {
                 format.depth.map_or(0, DepthFormat::max),
             )?,
             stencil: try_filled(if format.stencil_bits > 0 { n } else { 0 }, 0)?,
+            samples: Vec::new(),
         })
+    }
+
+    /// [`Target::try_new`] with [`multisample::SAMPLES`] sample planes when `multisampled`.
+    pub fn try_new_multisample(
+        width: u32,
+        height: u32,
+        format: TargetFormat,
+        multisampled: bool,
+    ) -> Option<Target> {
+        let mut t = Target::try_new(width, height, format)?;
+        if multisampled {
+            t.samples = (0..multisample::SAMPLES)
+                .map(|_| Target::try_new(width, height, format))
+                .collect::<Option<Vec<_>>>()?;
+        }
+        Some(t)
+    }
+
+    /// Samples per pixel: 0 for a single-sample target (`GL_SAMPLES`' convention).
+    pub fn samples(&self) -> u32 {
+        self.samples.len() as u32
+    }
+
+    /// The sample planes (empty for a single-sample target).
+    pub fn sample_planes_mut(&mut self) -> &mut [Target] {
+        &mut self.samples
+    }
+
+    /// Recomputes the color buffer as the box-filtered mean of the sample planes.
+    pub fn resolve(&mut self) {
+        let [a, b, c, d] = &self.samples[..] else {
+            return;
+        };
+        let format = self.format.color;
+        let planes = (
+            a.color.iter(),
+            b.color.iter(),
+            c.color.iter(),
+            d.color.iter(),
+        );
+        let words = planes.0.zip(planes.1).zip(planes.2).zip(planes.3);
+        for (out, (((&a, &b), &c), &d)) in self.color.iter_mut().zip(words) {
+            *out = multisample::resolve_words(format, &[a, b, c, d]);
+        }
+    }
+
+    /// Copies the color buffer into every sample plane, after something other than
+    /// rendering wrote it (a pixmap's initial pixels).
+    pub fn broadcast_color(&mut self) {
+        for s in &mut self.samples {
+            s.color.copy_from_slice(&self.color);
+        }
     }
 
     pub fn width(&self) -> u32 {
@@ -358,6 +417,9 @@ impl Target {
 
     /// Fills `rect` (clipped to the target) with `rgba`, writing only the channels in `mask`.
     pub fn clear_color(&mut self, rect: Rect, rgba: [f32; 4], mask: ColorMask) {
+        for s in &mut self.samples {
+            s.clear_color(rect, rgba, mask);
+        }
         let word = self.format.color.encode(rgba);
         let rect = rect.intersect(self.bounds());
         self.as_band().clear_color(rect, word, keep_mask(mask));
@@ -365,6 +427,9 @@ impl Target {
 
     /// Fills the depth buffer inside `rect` with `z` in [0, 1].
     pub fn clear_depth(&mut self, rect: Rect, z: f64) {
+        for s in &mut self.samples {
+            s.clear_depth(rect, z);
+        }
         let Some(f) = self.format.depth else { return };
         let rect = rect.intersect(self.bounds());
         self.as_band().clear_depth(rect, f.quantize(z));
@@ -372,6 +437,9 @@ impl Target {
 
     /// Fills the stencil buffer inside `rect` with `value`, writing only the bits in `mask`.
     pub fn clear_stencil(&mut self, rect: Rect, value: u32, mask: u32) {
+        for s in &mut self.samples {
+            s.clear_stencil(rect, value, mask);
+        }
         let rect = rect.intersect(self.bounds());
         self.as_band().clear_stencil(rect, value as u8, mask as u8);
     }

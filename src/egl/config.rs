@@ -1,6 +1,9 @@
-//! The frame buffer configurations: 18 configs, color {RGB565, RGB888, RGBA8888} × depth
-//! {0, 16, 24} × stencil {0, 8}, their attributes (EGL 1.4 table 3.1), and `eglChooseConfig`'s
-//! matching and sorting rules (section 3.4.1, table 3.4).
+//! The frame buffer configurations: 36 configs, color {RGB565, RGB888, RGBA8888} × depth
+//! {0, 16, 24} × stencil {0, 8} × samples {0, 4}, their attributes (EGL 1.4 table 3.1), and
+//! `eglChooseConfig`'s matching and sorting rules (section 3.4.1, table 3.4). Ids 1–18 are
+//! the single-sample configs, 19–36 the same list with `EGL_SAMPLE_BUFFERS` 1 and
+//! `EGL_SAMPLES` 4 ([`crate::core::multisample`]); the sort puts fewer samples first, so a
+//! program that does not ask for samples gets a single-sample config.
 
 use std::cmp::Ordering;
 
@@ -26,11 +29,13 @@ pub const SURFACE_TYPES: EGLint =
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Config {
-    /// EGL_CONFIG_ID, 1 ..= 18; also the handle value.
+    /// EGL_CONFIG_ID, 1 ..= 36; also the handle value.
     pub id: EGLint,
     pub color: ColorFormat,
     pub depth: Option<DepthFormat>,
     pub stencil: EGLint,
+    /// EGL_SAMPLES: 0, or [`crate::core::multisample::SAMPLES`] (with one sample buffer).
+    pub samples: EGLint,
 }
 
 const COLORS: [ColorFormat; 3] = [
@@ -45,15 +50,18 @@ pub fn all() -> &'static [Config] {
     static CONFIGS: std::sync::OnceLock<Vec<Config>> = std::sync::OnceLock::new();
     CONFIGS.get_or_init(|| {
         let mut v = Vec::new();
-        for color in COLORS {
-            for depth in DEPTHS {
-                for stencil in [0, 8] {
-                    v.push(Config {
-                        id: v.len() as EGLint + 1,
-                        color,
-                        depth,
-                        stencil,
-                    });
+        for samples in [0, crate::core::multisample::SAMPLES as EGLint] {
+            for color in COLORS {
+                for depth in DEPTHS {
+                    for stencil in [0, 8] {
+                        v.push(Config {
+                            id: v.len() as EGLint + 1,
+                            color,
+                            depth,
+                            stencil,
+                            samples,
+                        });
+                    }
                 }
             }
         }
@@ -97,6 +105,11 @@ impl Config {
         }
     }
 
+    /// True for the configs whose surfaces keep sample planes.
+    pub fn multisampled(&self) -> bool {
+        self.samples > 0
+    }
+
     fn bits(&self) -> [EGLint; 4] {
         let b = self.color.bits();
         [
@@ -134,8 +147,8 @@ impl Config {
             EGL_NATIVE_VISUAL_ID => native_format(self.color),
             EGL_NATIVE_VISUAL_TYPE => EGL_NONE,
             EGL_RENDERABLE_TYPE => EGL_OPENGL_ES_BIT,
-            EGL_SAMPLE_BUFFERS => 0,
-            EGL_SAMPLES => 0,
+            EGL_SAMPLE_BUFFERS => (self.samples > 0) as EGLint,
+            EGL_SAMPLES => self.samples,
             EGL_STENCIL_SIZE => self.stencil,
             EGL_SURFACE_TYPE => SURFACE_TYPES,
             EGL_TRANSPARENT_TYPE => EGL_NONE,
@@ -408,8 +421,8 @@ mod tests {
     }
 
     #[test]
-    fn eighteen_configs_with_consistent_attributes() {
-        assert_eq!(all().len(), 18);
+    fn thirty_six_configs_with_consistent_attributes() {
+        assert_eq!(all().len(), 36);
         for (i, c) in all().iter().enumerate() {
             assert_eq!(c.id as usize, i + 1);
             let sum: EGLint = [EGL_RED_SIZE, EGL_GREEN_SIZE, EGL_BLUE_SIZE, EGL_ALPHA_SIZE]
@@ -422,49 +435,68 @@ mod tests {
             }
         }
         assert_eq!(by_id(0), None);
-        assert_eq!(by_id(19), None);
+        assert_eq!(by_id(37), None);
+        for c in &all()[18..] {
+            let single = by_id(c.id - 18).unwrap();
+            assert_eq!(
+                (c.color, c.depth, c.stencil),
+                (single.color, single.depth, single.stencil)
+            );
+            assert_eq!(c.attrib(EGL_SAMPLE_BUFFERS), Some(1));
+            assert_eq!(c.attrib(EGL_SAMPLES), Some(4));
+            assert_eq!(single.attrib(EGL_SAMPLES), Some(0));
+        }
         assert_eq!(all()[0].attrib(0x1234), None);
     }
 
     #[test]
     fn default_criteria_want_window_es_and_sort_by_size() {
         let ids = choose(&[]);
-        assert_eq!(ids.len(), 18);
-        // No color sizes requested: smaller buffers first, then smaller depth and stencil.
+        assert_eq!(ids.len(), 36);
+        // No color sizes requested: smaller buffers first, then fewer samples, then smaller
+        // depth and stencil.
         assert_eq!(&ids[..6], &[1, 2, 3, 4, 5, 6]);
-        assert_eq!(ids[6], 7);
+        assert_eq!(&ids[6..12], &[19, 20, 21, 22, 23, 24]);
+        assert_eq!(ids[12], 7);
     }
 
     #[test]
     fn requested_color_bits_put_deeper_configs_first() {
         let ids = choose(&[(EGL_RED_SIZE, 1)]);
-        assert_eq!(ids.len(), 18);
+        assert_eq!(ids.len(), 36);
         // RGB888 (24 bits) and RGBA8888 (red 8) beat RGB565 (red 5); among equal red bits
-        // the smaller buffer wins.
+        // the smaller buffer wins, then fewer samples.
         assert_eq!(ids[0], 7);
-        assert_eq!(ids[6], 13);
-        assert_eq!(ids[12], 1);
+        assert_eq!(ids[6], 25);
+        assert_eq!(ids[12], 13);
+        assert_eq!(ids[24], 1);
         let ids = choose(&[(EGL_ALPHA_SIZE, 1)]);
-        assert_eq!(ids, vec![13, 14, 15, 16, 17, 18]);
+        assert_eq!(ids, vec![13, 14, 15, 16, 17, 18, 31, 32, 33, 34, 35, 36]);
+        // Asking for samples gets only the multisampled configs, in the same order.
+        let ids = choose(&[(EGL_SAMPLE_BUFFERS, 1), (EGL_SAMPLES, 4)]);
+        assert_eq!(ids.len(), 18);
+        assert_eq!(&ids[..6], &[19, 20, 21, 22, 23, 24]);
     }
 
     #[test]
     fn at_least_exact_mask_and_dont_care() {
-        assert_eq!(choose(&[(EGL_DEPTH_SIZE, 17)]).len(), 6);
-        assert_eq!(choose(&[(EGL_DEPTH_SIZE, EGL_DONT_CARE)]).len(), 18);
+        assert_eq!(choose(&[(EGL_DEPTH_SIZE, 17)]).len(), 12);
+        assert_eq!(choose(&[(EGL_DEPTH_SIZE, EGL_DONT_CARE)]).len(), 36);
         assert_eq!(choose(&[(EGL_LEVEL, 1)]).len(), 0);
         assert_eq!(
             choose(&[(EGL_SURFACE_TYPE, EGL_PIXMAP_BIT | EGL_PBUFFER_BIT)]).len(),
-            18
+            36
         );
         assert_eq!(choose(&[(EGL_RENDERABLE_TYPE, EGL_OPENVG_BIT)]).len(), 0);
-        assert_eq!(choose(&[(EGL_BIND_TO_TEXTURE_RGBA, 1)]).len(), 6);
+        assert_eq!(choose(&[(EGL_BIND_TO_TEXTURE_RGBA, 1)]).len(), 12);
         assert_eq!(
             choose(&[(EGL_COLOR_BUFFER_TYPE, EGL_LUMINANCE_BUFFER)]).len(),
             0
         );
         assert_eq!(choose(&[(EGL_CONFIG_CAVEAT, EGL_SLOW_CONFIG)]).len(), 0);
-        assert_eq!(choose(&[(EGL_SAMPLES, 1)]).len(), 0);
+        assert_eq!(choose(&[(EGL_SAMPLES, 1)]).len(), 18);
+        assert_eq!(choose(&[(EGL_SAMPLES, 5)]).len(), 0);
+        assert_eq!(choose(&[(EGL_SAMPLE_BUFFERS, 2)]).len(), 0);
     }
 
     #[test]
@@ -510,6 +542,6 @@ mod tests {
             .iter()
             .map(|c| c.id)
             .collect();
-        assert_eq!(ids, vec![1, 2, 3, 4, 5, 6]);
+        assert_eq!(ids, vec![1, 2, 3, 4, 5, 6, 19, 20, 21, 22, 23, 24]);
     }
 }

@@ -827,8 +827,8 @@ mod tests {
         assert_eq!(initialize(d), Ok((1, 5)));
         assert_eq!(query_string(d, 0x1234), Err(EGL_BAD_PARAMETER));
         assert_eq!(query_string(d, EGL_CLIENT_APIS), Ok(CLIENT_APIS));
-        assert_eq!(get_configs(d).unwrap().len(), 18);
-        assert_eq!(get_config_attrib(d, 19, EGL_RED_SIZE), Err(EGL_BAD_CONFIG));
+        assert_eq!(get_configs(d).unwrap().len(), 36);
+        assert_eq!(get_config_attrib(d, 37, EGL_RED_SIZE), Err(EGL_BAD_CONFIG));
         assert_eq!(get_config_attrib(d, 1, 0x1234), Err(EGL_BAD_ATTRIBUTE));
 
         let s1 = pbuffer(1, 4, 4);

@@ -323,10 +323,11 @@ impl Surface {
         config: &'static Config,
         attribs: CreateAttribs,
     ) -> Result<Surface, EGLint> {
-        let target = Target::try_new(
+        let target = Target::try_new_multisample(
             attribs.width as u32,
             attribs.height as u32,
             config.target_format(),
+            config.multisampled(),
         )
         .ok_or(EGL_BAD_ALLOC)?;
         Ok(Surface::new(
@@ -361,14 +362,16 @@ impl Surface {
         }
         attribs.width = layout.width;
         attribs.height = layout.height;
-        let mut target = Target::try_new(
+        let mut target = Target::try_new_multisample(
             layout.width as u32,
             layout.height as u32,
             config.target_format(),
+            config.multisampled(),
         )
         .ok_or(EGL_BAD_ALLOC)?;
         if kind == Kind::Pixmap {
             memory.with_bytes(&mut |b| read_from_memory(&mut target, layout, b));
+            target.broadcast_color();
         }
         Ok(Surface::new(
             id,

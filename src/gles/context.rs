@@ -337,7 +337,7 @@ impl Context {
             match &self.frame {
                 Some(fr) if fr.fits(&t) => true,
                 _ => {
-                    self.frame = Some(Frame::new(t.width(), t.height(), t.format()));
+                    self.frame = Some(Frame::for_target(&t));
                     false
                 }
             }

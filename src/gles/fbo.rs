@@ -447,6 +447,15 @@ impl Context {
 
     /// The format of what draws go to: the bound framebuffer's (`None` when incomplete) or
     /// the draw surface's.
+    /// `GL_SAMPLES` of what draws go to: the draw surface's samples per pixel, 0 for a
+    /// single-sample surface, a framebuffer object or none.
+    pub(super) fn draw_samples(&self) -> u32 {
+        match (&self.draw, self.fbo.bound) {
+            (Some(d), 0) => super::context::lock_target(d.as_ref()).samples(),
+            _ => 0,
+        }
+    }
+
     pub(super) fn current_draw_format(&self) -> Option<TargetFormat> {
         if self.fbo.bound == 0 {
             let d = self.draw.as_ref()?;

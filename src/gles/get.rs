@@ -310,8 +310,9 @@ impl Context {
             super::tokens_ext::GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT => {
                 Value::floats(&[crate::core::texture::MAX_ANISOTROPY])
             }
-            // Every config is single-sample.
-            GL_SAMPLE_BUFFERS | GL_SAMPLES => Value::int(0),
+            // The draw surface's (framebuffer objects are single-sample).
+            GL_SAMPLE_BUFFERS => Value::int((self.draw_samples() > 0) as i64),
+            GL_SAMPLES => Value::int(self.draw_samples() as i64),
             GL_RED_BITS => Value::int(bits[0] as i64),
             GL_GREEN_BITS => Value::int(bits[1] as i64),
             GL_BLUE_BITS => Value::int(bits[2] as i64),

@@ -335,5 +335,13 @@ impl Context {
             units: s.polygon_offset_units,
             clamp: s.polygon_offset_clamp,
         });
+        rs.multisample = crate::core::multisample::Multisample {
+            enabled: e.multisample,
+            coverage: e
+                .sample_coverage
+                .then_some((s.sample_coverage_value, s.sample_coverage_invert)),
+            alpha_to_coverage: e.sample_alpha_to_coverage,
+            alpha_to_one: e.sample_alpha_to_one,
+        };
     }
 }

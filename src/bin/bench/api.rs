@@ -190,11 +190,18 @@ impl Egl {
     // `accuracy` calls this, `bench` the general form.
     #[allow(dead_code)]
     pub fn new(gl: &Api, width: u32, height: u32) -> Result<Egl, String> {
-        Egl::with_config(gl, width, height, false)
+        Egl::with_config(gl, width, height, false, 0)
     }
 
-    /// [`Egl::new`] with an RGB565 + depth 16 pbuffer when `rgb565`.
-    pub fn with_config(gl: &Api, width: u32, height: u32, rgb565: bool) -> Result<Egl, String> {
+    /// [`Egl::new`] with an RGB565 + depth 16 pbuffer when `rgb565`, and exactly `samples`
+    /// samples per pixel (0: single-sample).
+    pub fn with_config(
+        gl: &Api,
+        width: u32,
+        height: u32,
+        rgb565: bool,
+        samples: EGLint,
+    ) -> Result<Egl, String> {
         let (rgba, depth): ([EGLint; 4], EGLint) = if rgb565 {
             ([5, 6, 5, 0], 16)
         } else {
@@ -228,6 +235,10 @@ impl Egl {
                 rgba[3],
                 EGL_DEPTH_SIZE,
                 depth,
+                EGL_SAMPLE_BUFFERS,
+                (samples > 0) as EGLint,
+                EGL_SAMPLES,
+                samples,
                 EGL_NONE,
             ];
             let mut configs: Vec<EGLConfig> = vec![null_mut(); 256];
@@ -258,6 +269,7 @@ impl Egl {
                         .zip(rgba)
                         .all(|(&a, bits)| attr(c, a) == bits)
                         && attr(c, EGL_DEPTH_SIZE) == depth
+                        && attr(c, EGL_SAMPLES) == samples
                 })
                 .min_by_key(|&c| attr(c, EGL_STENCIL_SIZE))
                 .ok_or_else(|| format!("no pbuffer config of color {rgba:?} and depth {depth}"))?;

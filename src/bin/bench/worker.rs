@@ -38,6 +38,8 @@ pub struct Job {
     pub which: Which,
     pub mode: Mode,
     pub scene: String,
+    /// Samples per pixel of the pbuffer config: 0 (single-sample) or 4 (`--msaa`).
+    pub samples: i32,
 }
 
 /// Prints one protocol line and flushes it (stdout is a pipe, so it is block-buffered).
@@ -109,7 +111,7 @@ pub fn run(job: &Job) -> Result<(), String> {
     };
     let gl = &api;
     let rgb565 = scene.format == ColorFormat::Rgb565;
-    let ctx = match Egl::with_config(gl, scene.width, scene.height, rgb565) {
+    let ctx = match Egl::with_config(gl, scene.width, scene.height, rgb565, job.samples) {
         Ok(c) => c,
         Err(e) => {
             say(&format!("unavailable {e}"));

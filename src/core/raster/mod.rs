@@ -87,5 +87,14 @@ pub(crate) fn window(
     let x = (pos.x as f64 * inv_w + 1.0) * 0.5 * vp.width as f64 + vp.x as f64;
     let y = (pos.y as f64 * inv_w + 1.0) * 0.5 * vp.height as f64 + vp.y as f64;
     let z = (pos.z as f64 * inv_w) * (f - n) * 0.5 + (f + n) * 0.5;
-    Some((snap(x), snap(y), z.clamp(0.0, 1.0), inv_w))
+    let (x, y) = match state.sample {
+        // A sample plane's primitive moves by the negated sample offset (see `multisample`).
+        Some(s) => {
+            let unit = (1 << super::SUBPIXEL_BITS) as f64;
+            let [ox, oy] = s.offset.map(|o| o as f64 / unit);
+            (snap(x) - ox, snap(y) - oy)
+        }
+        None => (snap(x), snap(y)),
+    };
+    Some((x, y, z.clamp(0.0, 1.0), inv_w))
 }
