@@ -96,7 +96,6 @@ GL_API void GL_APIENTRY glPushDebugGroupKHR (GLenum source, GLuint id, GLsizei l
 #ifndef GL_OES_EGL_image
 #define GL_OES_EGL_image 1
 typedef void *GLeglImageOES;
-/* Not provided by libGLES_CM: glEGLImageTargetTexture2DOES, glEGLImageTargetRenderbufferStorageOES. */
 typedef void (GL_APIENTRYP PFNGLEGLIMAGETARGETTEXTURE2DOESPROC) (GLenum target, GLeglImageOES image);
 typedef void (GL_APIENTRYP PFNGLEGLIMAGETARGETRENDERBUFFERSTORAGEOESPROC) (GLenum target, GLeglImageOES image);
 #ifdef GL_GLEXT_PROTOTYPES
@@ -511,6 +510,7 @@ GL_API void GL_APIENTRY glOrthofOES (GLfloat l, GLfloat r, GLfloat b, GLfloat t,
 
 #ifndef GL_OES_surfaceless_context
 #define GL_OES_surfaceless_context 1
+/* A context current without surfaces (EGL_KHR_surfaceless_context): its default framebuffer does not exist. */
 #define GL_FRAMEBUFFER_UNDEFINED_OES      0x8219
 #endif /* GL_OES_surfaceless_context */
 

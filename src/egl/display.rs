@@ -842,7 +842,9 @@ mod tests {
         assert_eq!(make_current(d, s1, s1, 777), Err(EGL_BAD_CONTEXT));
         assert_eq!(make_current(d, 777, s1, c1), Err(EGL_BAD_SURFACE));
         assert_eq!(make_current(d, s1, s1, 0), Err(EGL_BAD_MATCH));
-        assert_eq!(make_current(d, 0, 0, c1), Err(EGL_BAD_MATCH));
+        // One surface without the other (no surfaces at all is a surfaceless binding).
+        assert_eq!(make_current(d, 0, s1, c1), Err(EGL_BAD_MATCH));
+        assert_eq!(make_current(d, s1, 0, c1), Err(EGL_BAD_MATCH));
         assert_eq!(make_current(d, s2, s2, c1), Err(EGL_BAD_MATCH));
         assert_eq!(current_context(), 0);
 
