@@ -1,6 +1,6 @@
 /*
- * gl_khr_debug.c: GL_KHR_debug. Debug output starts disabled (our contexts are not debug
- * contexts); enabled, every GL error becomes a message naming the call, the argument and
+ * gl_khr_debug.c: GL_KHR_debug. Debug output starts disabled (ct_init's context is not a
+ * debug context); enabled, every GL error becomes a message naming the call, the argument and
  * its value; the log keeps 64 messages and is read back with exact counts and lengths;
  * message control filters by source, type, severity and ids; debug groups push and pop
  * their messages and control state; object labels for each ES 1.1 namespace; the callback
