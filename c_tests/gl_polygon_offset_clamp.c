@@ -40,14 +40,18 @@ static void redraw(GLenum func, GLfloat units, GLfloat clamp, int expect_red)
 int main(void)
 {
     GLfloat f[3] = {-1, -1, -1};
+    int listed;
 
     ct_init(8, 8);
     glPolygonOffsetClampEXT =
         (PFNGLPOLYGONOFFSETCLAMPEXTPROC)eglGetProcAddress("glPolygonOffsetClampEXT");
-    CHECK(glPolygonOffsetClampEXT != NULL);
-    CHECK(strstr((const char *)glGetString(GL_EXTENSIONS), "GL_EXT_polygon_offset_clamp") !=
-          NULL);
-    if (glPolygonOffsetClampEXT == NULL)
+    listed = strstr((const char *)glGetString(GL_EXTENSIONS), "GL_EXT_polygon_offset_clamp") !=
+             NULL;
+    /* Ours lists it; of Mesa's drivers llvmpipe does and softpipe does not (there the
+     * program ends here). */
+    if (ct_strict())
+        CHECK(listed && glPolygonOffsetClampEXT != NULL);
+    if (!listed || glPolygonOffsetClampEXT == NULL)
         return ct_done();
 
     glGetFloatv(GL_POLYGON_OFFSET_CLAMP_EXT, f);
@@ -69,7 +73,6 @@ int main(void)
     redraw(GL_GREATER, 1000, 0, 1);
     redraw(GL_GREATER, 1000, 1e-12f, 0);
     redraw(GL_GREATER, 1000, -1e-12f, 1);
-    ct_save("clamped");
     CHECK_GL(GL_NO_ERROR);
     return ct_done();
 }
