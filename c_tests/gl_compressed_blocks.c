@@ -103,6 +103,8 @@ static void pvrtc(void)
     CHECK_PIXEL(1, 0, 255, 255, 255, 255, 0);
     CHECK_PIXEL(9, 4, 255, 255, 255, 255, 0);
     CHECK_PIXEL(2, 0, 0, 0, 0, 255, 0);
+    /* The same words as data for the uploads below (and the 48-byte error case). */
+    fill_words(data, 64, word);
     glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA_PVRTC_2BPPV1_IMG, 16, 8, 0, 32,
                            data);
     CHECK_GL(GL_NO_ERROR);
