@@ -141,6 +141,20 @@ static CT_UNUSED int ct_near(int a, int b, int tol)
         }                                                                                \
     } while (0)
 
+/* Whether `word` is one of the space-separated names in `list` (an extension string; a
+ * name that only begins another does not count). */
+static CT_UNUSED int ct_has_word(const char *list, const char *word)
+{
+    size_t n = strlen(word);
+    const char *p = list;
+    while (p && (p = strstr(p, word)) != NULL) {
+        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
+            return 1;
+        p += n;
+    }
+    return 0;
+}
+
 static CT_UNUSED int ct_is_size_attrib(EGLint a)
 {
     return a == EGL_RED_SIZE || a == EGL_GREEN_SIZE || a == EGL_BLUE_SIZE ||

@@ -9,18 +9,6 @@
 #include <EGL/eglext.h>
 #include <GLES/glext.h>
 
-static int has_word(const char *list, const char *word)
-{
-    size_t n = strlen(word);
-    const char *p = list;
-    while (p && (p = strstr(p, word)) != NULL) {
-        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-            return 1;
-        p += n;
-    }
-    return 0;
-}
-
 /* eglCreateContext with `attribs`: the error, and the context made current and destroyed
  * when there is one (it must render, with GL_KHR_debug's output on exactly in a debug
  * context). */
@@ -66,7 +54,7 @@ int main(void)
     static const EGLint unknown[] = {EGL_WIDTH, 1, EGL_NONE};
 
     ct_init(4, 4);
-    CHECK(has_word(eglQueryString(ct.display, EGL_EXTENSIONS), "EGL_KHR_create_context"));
+    CHECK(ct_has_word(eglQueryString(ct.display, EGL_EXTENSIONS), "EGL_KHR_create_context"));
     glDisable(GL_DITHER);
     CHECK(create(NULL) == EGL_SUCCESS);
     CHECK(create(v10) == EGL_SUCCESS);

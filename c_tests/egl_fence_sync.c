@@ -18,18 +18,6 @@ static PFNEGLCLIENTWAITSYNCKHRPROC client_wait_sync_khr;
 static PFNEGLGETSYNCATTRIBKHRPROC get_sync_attrib_khr;
 static PFNEGLWAITSYNCKHRPROC wait_sync_khr;
 
-static int has_word(const char *list, const char *word)
-{
-    size_t n = strlen(word);
-    const char *p = list;
-    while (p && (p = strstr(p, word)) != NULL) {
-        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-            return 1;
-        p += n;
-    }
-    return 0;
-}
-
 static void draw_red(void)
 {
     static const GLfloat tri[6] = {-1, -1, 3, -1, -1, 3};
@@ -119,9 +107,9 @@ int main(void)
     const char *egl_ext;
     ct_init(8, 8);
     egl_ext = eglQueryString(ct.display, EGL_EXTENSIONS);
-    CHECK(has_word(egl_ext, "EGL_KHR_fence_sync"));
-    CHECK(has_word(egl_ext, "EGL_KHR_wait_sync"));
-    CHECK(has_word((const char *)glGetString(GL_EXTENSIONS), "GL_OES_EGL_sync"));
+    CHECK(ct_has_word(egl_ext, "EGL_KHR_fence_sync"));
+    CHECK(ct_has_word(egl_ext, "EGL_KHR_wait_sync"));
+    CHECK(ct_has_word((const char *)glGetString(GL_EXTENSIONS), "GL_OES_EGL_sync"));
     create_sync = (PFNEGLCREATESYNCPROC)eglGetProcAddress("eglCreateSync");
     destroy_sync = (PFNEGLDESTROYSYNCPROC)eglGetProcAddress("eglDestroySync");
     client_wait_sync = (PFNEGLCLIENTWAITSYNCPROC)eglGetProcAddress("eglClientWaitSync");

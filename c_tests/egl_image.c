@@ -19,18 +19,6 @@ static PFNEGLDESTROYIMAGEKHRPROC destroy_image_khr;
 static PFNGLEGLIMAGETARGETTEXTURE2DOESPROC image_target_texture;
 static PFNGLEGLIMAGETARGETRENDERBUFFERSTORAGEOESPROC image_target_renderbuffer;
 
-static int has_word(const char *list, const char *word)
-{
-    size_t n = strlen(word);
-    const char *p = list;
-    while (p && (p = strstr(p, word)) != NULL) {
-        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-            return 1;
-        p += n;
-    }
-    return 0;
-}
-
 static void load(void)
 {
     create_image = (PFNEGLCREATEIMAGEPROC)eglGetProcAddress("eglCreateImage");
@@ -80,9 +68,9 @@ int main(void)
     ct_init(8, 8);
     load();
     egl_ext = eglQueryString(ct.display, EGL_EXTENSIONS);
-    CHECK(has_word(egl_ext, "EGL_KHR_image_base"));
-    CHECK(has_word(egl_ext, "EGL_KHR_gl_texture_2D_image"));
-    CHECK(has_word((const char *)glGetString(GL_EXTENSIONS), "GL_OES_EGL_image"));
+    CHECK(ct_has_word(egl_ext, "EGL_KHR_image_base"));
+    CHECK(ct_has_word(egl_ext, "EGL_KHR_gl_texture_2D_image"));
+    CHECK(ct_has_word((const char *)glGetString(GL_EXTENSIONS), "GL_OES_EGL_image"));
     glDisable(GL_DITHER);
     glGenTextures(3, tex);
     glBindTexture(GL_TEXTURE_2D, tex[0]);

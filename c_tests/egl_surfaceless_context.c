@@ -10,18 +10,6 @@
 #include "common.h"
 #include "fbo_functions.h"
 
-static int has_word(const char *list, const char *word)
-{
-    size_t n = strlen(word);
-    const char *p = list;
-    while (p && (p = strstr(p, word)) != NULL) {
-        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-            return 1;
-        p += n;
-    }
-    return 0;
-}
-
 static void the_default_framebuffer_is_missing(void)
 {
     static const GLfloat tri[6] = {-1, -1, 1, -1, 0, 1};
@@ -79,9 +67,9 @@ int main(void)
 
     ct_init(8, 8);
     ct_load_fbo();
-    CHECK(has_word((const char *)glGetString(GL_EXTENSIONS), "GL_OES_surfaceless_context"));
+    CHECK(ct_has_word((const char *)glGetString(GL_EXTENSIONS), "GL_OES_surfaceless_context"));
     ext = eglQueryString(ct.display, EGL_EXTENSIONS);
-    CHECK(has_word(ext, "EGL_KHR_surfaceless_context"));
+    CHECK(ct_has_word(ext, "EGL_KHR_surfaceless_context"));
 
     /* A second context, never current with a surface. */
     other = eglCreateContext(ct.display, ct.config, EGL_NO_CONTEXT, NULL);
