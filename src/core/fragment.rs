@@ -638,6 +638,22 @@ impl SpanInterp {
     #[inline]
     fn new(t: &Shading, span: Span, perspective: Quality) -> SpanInterp {
         let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
+        if t.flat.is_some() {
+            // Flat shading reads no interpolated color: depth only, no plane to divide.
+            return SpanInterp {
+                z0: t.z.at(px, py),
+                dz: t.z.dx,
+                inv_w0: 1.0,
+                d_inv_w: 0.0,
+                c0: [0.0; 4],
+                dc: [0.0; 4],
+                divide: Divide::None,
+                len: (span.x1 - span.x0) as usize,
+                run: usize::MAX,
+                run_c: [0.0; 4],
+                run_dc: [0.0; 4],
+            };
+        }
         // Written out per channel: `array::map` leaves its closure as a call per span.
         let cw = &t.color_w;
         let mut c0 = [

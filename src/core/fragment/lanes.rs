@@ -588,27 +588,35 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     band: &mut BandMut<'_>,
 ) {
     let mut interp = SpanInterp::new(t, span, k.perspective);
+    let flat = t.flat.unwrap_or_default();
+    let thresholds = span_thresholds(k, span);
+    let thresholds = thresholds.as_ref();
+    // An unblended flat color stores the same words in every group of the span, dithered
+    // or not (groups start a multiple of the dither period apart): encoded once here, where
+    // every group and every short-span pixel would otherwise encode it again.
+    let flat_words =
+        (!SMOOTH && !BLEND).then(|| encode_lanes(k.color, &flat.map(|c| [c; LANES]), thresholds));
     if interp.len < SHORT {
-        return simple_pixels::<DEPTH, SMOOTH, BLEND>(k, t, span, band, interp);
+        return simple_pixels::<DEPTH, SMOOTH, BLEND>(k, t, span, band, interp, flat_words);
     }
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
-    let flat = t.flat.unwrap_or_default();
-    if !DEPTH && !SMOOTH && !BLEND && !k.dither {
-        // One word for the whole span: a fill.
-        let (word, keep) = (k.color.encode(flat), k.keep);
-        for px in &mut band.color[start..start + len] {
-            *px = (*px & keep) | (word & !keep);
+    if let (false, Some(words)) = (DEPTH, flat_words) {
+        // A fill of the span with the words' pattern, through the color mask.
+        let keep = k.keep;
+        for group in band.color[start..start + len].chunks_mut(LANES) {
+            for (px, &word) in group.iter_mut().zip(&words) {
+                *px = (*px & keep) | (word & !keep);
+            }
         }
         return;
     }
-    let thresholds = span_thresholds(k, span);
-    let thresholds = thresholds.as_ref();
     for_each_group!(DEPTH, band, start, len, |i0, live, color, depth| {
         simple_group::<DEPTH, SMOOTH, BLEND>(
             k,
             &mut interp,
             flat,
+            flat_words.as_ref(),
             i0,
             live,
             color,
@@ -625,6 +633,7 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     interp: &mut SpanInterp,
     flat: [f32; 4],
+    flat_words: Option<&Lane<u32>>,
     i0: usize,
     live: Lane<u32>,
     color: &mut Lane<u32>,
@@ -634,6 +643,9 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     let Some(pass) = group_pass::<DEPTH>(k, interp, i0, live, depth) else {
         return;
     };
+    if let Some(words) = flat_words {
+        return store(k, color, &pass, words);
+    }
     // Measured: with a depth test in the same group the separate steps are faster.
     let fused = if SMOOTH && !BLEND && !DEPTH {
         smooth_words(interp, i0, k.color)
@@ -663,6 +675,7 @@ fn simple_pixels<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     span: Span,
     band: &mut BandMut<'_>,
     mut interp: SpanInterp,
+    flat_words: Option<Lane<u32>>,
 ) {
     let row = (span.y - band.y0) as usize * band.width;
     let flat = t.flat.unwrap_or_default();
@@ -683,6 +696,10 @@ fn simple_pixels<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
             continue;
         }
         let dst = band.color[at];
+        if let Some(words) = &flat_words {
+            band.color[at] = (dst & k.keep) | (words[i % LANES] & !k.keep);
+            continue;
+        }
         let src = if SMOOTH { interp.color(i) } else { flat };
         let src = if BLEND {
             let b = k.blend.expect("BLEND routes blend");
