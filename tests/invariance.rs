@@ -542,8 +542,8 @@ fn lod_filters_and_combine_agree_across_span_routines() {
     }
 }
 
-/// Every span route the vectorized code has (simple: depth × smooth × blend, including the
-/// one-word fill; textured: fog only, NEAREST, bilinear, trilinear, other filters, several
+/// Every span route the vectorized code has (simple: depth × smooth (DONT_CARE and
+/// FASTEST hints) × blend, including the one-word fill; textured: fog only, NEAREST, bilinear, trilinear, other filters, several
 /// units; with and without depth and blending) on every color format, with dithering off
 /// and on, gives the pixels of the per-pixel routine (alpha test ALWAYS, an unrelated state
 /// that only the per-pixel routine handles).
@@ -589,6 +589,11 @@ fn every_route_on_every_format_agrees_with_the_per_pixel_routine() {
             let how = format!("depth {depth}, blend {blending}");
             routes.push((format!("smooth, {how}"), setup(smooth.clone()), || {
                 scenes::smooth_triangles(40, 11)
+            }));
+            // GL_FASTEST perspective hint (and its reciprocal decode when blending).
+            let fastest = setup(scenes::perspective_state(W, H, Quality::Fastest));
+            routes.push((format!("smooth FASTEST, {how}"), fastest, || {
+                scenes::smooth_triangles(40, 14)
             }));
             let mut flat = setup(smooth.clone());
             flat.shade_model = GLES_CM::core::state::ShadeModel::Flat;

@@ -121,7 +121,7 @@ fn depth_test(
 
 /// The interpolated colors of the group at `i0`.
 #[inline(always)]
-fn colors(interp: &mut SpanInterp, i0: usize) -> Channels {
+fn colors(interp: &SpanInterp, i0: usize) -> Channels {
     // Built as values, one whole vector per channel: arrays filled piecewise in memory and
     // then reloaded whole stall store forwarding.
     let fi0 = i0 as f32;
@@ -137,22 +137,7 @@ fn colors(interp: &mut SpanInterp, i0: usize) -> Channels {
                 std::array::from_fn(|j| (c0[c] + dc[c] * (fi0 + J32[j])) * w[j])
             })
         }
-        Divide::Stepped => colors_by_pixel(interp, i0),
     }
-}
-
-/// [`colors`] under the stepped divide, pixel by pixel. Out of line: inlined, its
-/// pixel-major writes lead the vectorizer to run the whole group routine pixel-major.
-#[inline(never)]
-fn colors_by_pixel(interp: &mut SpanInterp, i0: usize) -> Channels {
-    let mut out = [[0.0; LANES]; 4];
-    for j in 0..LANES.min(interp.len - i0) {
-        let c = interp.color(i0 + j);
-        for k in 0..4 {
-            out[k][j] = c[k];
-        }
-    }
-    out
 }
 
 /// The encoded words of an unblended smooth group, interpolated and encoded in one pass
@@ -187,7 +172,6 @@ fn smooth_words(interp: &SpanInterp, i0: usize, format: ColorFormat) -> Option<L
             let w = 1.0 / (w0 + dw * f);
             word(std::array::from_fn(|c| (c0[c] + dc[c] * f) * w))
         })),
-        Divide::Stepped => None,
     }
 }
 
@@ -386,6 +370,9 @@ fn blend_lanes(b: &Blend, src: &mut Channels, dst: &mut Channels) {
         }
     }
     let src = &*src;
+    if add_blend(b, src, dst) {
+        return;
+    }
     let mut out = [[0.0; LANES]; 4];
     for (c, out) in out.iter_mut().enumerate() {
         let (fs, fd, eq) = if c < 3 {
@@ -425,6 +412,50 @@ fn blend_lanes(b: &Blend, src: &mut Channels, dst: &mut Channels) {
         }
     }
     *dst = out;
+}
+
+/// The blend functions programs use most (alpha, premultiplied alpha, additive,
+/// modulation), with the ADD equation and the same factors for color and alpha: each
+/// factor is written out in a loop of its own instead of selected per channel and group.
+/// The arithmetic is `blend_lanes`' own, `s·sf + d·df` lane by lane, so the results are
+/// the same bits. Returns false (and leaves `dst`) for every other blend.
+#[inline(always)]
+fn add_blend(b: &Blend, src: &Channels, dst: &mut Channels) -> bool {
+    use BlendFactor::*;
+    if b.eq_rgb != BlendEquation::Add
+        || b.eq_alpha != BlendEquation::Add
+        || b.src_rgb != b.src_alpha
+        || b.dst_rgb != b.dst_alpha
+    {
+        return false;
+    }
+    // `sf(c, j)` and `df(c, j)`: the factors of channel c, lane j, given the destination.
+    #[inline(always)]
+    fn each(
+        src: &Channels,
+        dst: &mut Channels,
+        sf: impl Fn(&Channels, &Channels, usize, usize) -> f32,
+        df: impl Fn(&Channels, &Channels, usize, usize) -> f32,
+    ) {
+        let d = *dst;
+        for c in 0..4 {
+            for j in 0..LANES {
+                dst[c][j] = src[c][j] * sf(src, &d, c, j) + d[c][j] * df(src, &d, c, j);
+            }
+        }
+    }
+    match (b.src_rgb, b.dst_rgb) {
+        (SrcAlpha, OneMinusSrcAlpha) => {
+            each(src, dst, |s, _, _, j| s[3][j], |s, _, _, j| 1.0 - s[3][j])
+        }
+        (One, OneMinusSrcAlpha) => each(src, dst, |_, _, _, _| 1.0, |s, _, _, j| 1.0 - s[3][j]),
+        (SrcAlpha, One) => each(src, dst, |s, _, _, j| s[3][j], |_, _, _, _| 1.0),
+        (One, One) => each(src, dst, |_, _, _, _| 1.0, |_, _, _, _| 1.0),
+        (DstColor, Zero) => each(src, dst, |_, d, c, j| d[c][j], |_, _, _, _| 0.0),
+        (Zero, SrcColor) => each(src, dst, |_, _, _, _| 0.0, |s, _, c, j| s[c][j]),
+        _ => return false,
+    }
+    true
 }
 
 /// Runs `$group(i0, live, color, depth)` over the groups of the span of `$len` pixels at
@@ -587,7 +618,12 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     span: Span,
     band: &mut BandMut<'_>,
 ) {
-    let mut interp = SpanInterp::new(t, span, k.perspective);
+    // Points and lines carry a flat color and planes alike: the route says which is read.
+    let interp = if SMOOTH {
+        SpanInterp::new(t, span)
+    } else {
+        SpanInterp::depth_only(t, span)
+    };
     let flat = t.flat.unwrap_or_default();
     let thresholds = span_thresholds(k, span);
     let thresholds = thresholds.as_ref();
@@ -614,7 +650,7 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     for_each_group!(DEPTH, band, start, len, |i0, live, color, depth| {
         simple_group::<DEPTH, SMOOTH, BLEND>(
             k,
-            &mut interp,
+            &interp,
             flat,
             flat_words.as_ref(),
             i0,
@@ -631,7 +667,7 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
 #[allow(clippy::too_many_arguments)]
 fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     k: &FragmentKey,
-    interp: &mut SpanInterp,
+    interp: &SpanInterp,
     flat: [f32; 4],
     flat_words: Option<&Lane<u32>>,
     i0: usize,
@@ -674,7 +710,7 @@ fn simple_pixels<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     t: &Shading,
     span: Span,
     band: &mut BandMut<'_>,
-    mut interp: SpanInterp,
+    interp: SpanInterp,
     flat_words: Option<Lane<u32>>,
 ) {
     let row = (span.y - band.y0) as usize * band.width;
@@ -1380,7 +1416,7 @@ pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
     band: &mut BandMut<'_>,
 ) {
     let stage = k.tex.as_deref().expect("textured routes have a stage");
-    let mut interp = SpanInterp::new(t, span, k.perspective);
+    let interp = SpanInterp::new(t, span);
     let mut tex = SpanTex::new(stage, t, span);
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
@@ -1388,15 +1424,7 @@ pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
     let thresholds = thresholds.as_ref();
     for_each_group!(DEPTH, band, start, len, |i0, live, color, depth| {
         textured_group::<F, DEPTH, BLEND>(
-            k,
-            t,
-            &mut interp,
-            &mut tex,
-            i0,
-            live,
-            color,
-            depth,
-            thresholds,
+            k, t, &interp, &mut tex, i0, live, color, depth, thresholds,
         )
     });
 }
@@ -1410,7 +1438,7 @@ pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
 fn textured_group<const F: u8, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
-    interp: &mut SpanInterp,
+    interp: &SpanInterp,
     tex: &mut SpanTex,
     i0: usize,
     live: Lane<u32>,
@@ -1464,6 +1492,70 @@ mod tests {
                     expand_to_8(v, n) as u32,
                     "{v} of {n} bits"
                 );
+            }
+        }
+    }
+
+    /// Every pair of blend factors with the ADD equation (so the functions `add_blend`
+    /// writes out and the general loop alike), and every equation with one factor pair,
+    /// lane by lane against the per-pixel `blend`, to the bit.
+    #[test]
+    fn blend_lanes_match_the_per_pixel_blend() {
+        use BlendFactor::*;
+        const FACTORS: [BlendFactor; 11] = [
+            Zero,
+            One,
+            SrcColor,
+            OneMinusSrcColor,
+            DstColor,
+            OneMinusDstColor,
+            SrcAlpha,
+            OneMinusSrcAlpha,
+            DstAlpha,
+            OneMinusDstAlpha,
+            SrcAlphaSaturate,
+        ];
+        let values = [0.0, 1.0, 0.3, 0.71, -0.5, 1.7, 0.5, 0.999, 0.001, 0.25];
+        let lane = |at: usize| -> Channels {
+            std::array::from_fn(|c| std::array::from_fn(|j| values[(at + 3 * c + j) % 10]))
+        };
+        let mut blends = Vec::new();
+        for &src in &FACTORS {
+            for &dst in &FACTORS {
+                blends.push(Blend::func(src, dst));
+            }
+        }
+        for eq in [
+            BlendEquation::Subtract,
+            BlendEquation::ReverseSubtract,
+            BlendEquation::Min,
+            BlendEquation::Max,
+        ] {
+            blends.push(Blend {
+                eq_rgb: eq,
+                eq_alpha: eq,
+                ..Blend::func(SrcAlpha, OneMinusSrcAlpha)
+            });
+        }
+        blends.push(Blend {
+            src_alpha: One,
+            ..Blend::func(SrcAlpha, OneMinusSrcAlpha)
+        });
+        for b in &blends {
+            for at in 0..10 {
+                let (mut src, mut dst) = (lane(at), lane(at + 4));
+                let (src0, dst0) = (src, dst);
+                blend_lanes(b, &mut src, &mut dst);
+                for j in 0..LANES {
+                    let want = blend(
+                        b,
+                        std::array::from_fn(|c| src0[c][j]),
+                        std::array::from_fn(|c| dst0[c][j]),
+                    );
+                    for c in 0..4 {
+                        assert_eq!(dst[c][j].to_bits(), want[c].to_bits(), "{b:?} lane {j}");
+                    }
+                }
             }
         }
     }
