@@ -226,8 +226,23 @@ impl Frame {
         );
     }
 
-    /// Rasterizes everything recorded into `target` on up to `threads` threads, then empties
-    /// the frame.
+    /// Rasterizes everything recorded into `target` on the library's threads
+    /// ([`thread_count`]), then empties the frame. `target` must be the kind the frame
+    /// records for ([`Frame::fits`]).
+    pub fn flush_into(&mut self, target: &mut Target) {
+        self.flush(target, thread_count());
+    }
+
+    /// [`Frame::flush_into`] when the frame is full, so the work that follows starts from
+    /// an empty frame and what is pending stays bounded.
+    pub fn flush_if_full(&mut self, target: &mut Target) {
+        if self.is_full() {
+            self.flush_into(target);
+        }
+    }
+
+    /// [`Frame::flush_into`] on exactly `threads` threads: what the tests of thread-count
+    /// invariance and the benchmarks at a given count need.
     pub fn flush(&mut self, target: &mut Target, threads: usize) {
         if self.is_empty() {
             return;

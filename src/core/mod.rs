@@ -44,9 +44,9 @@ pub struct OutOfMemory;
 /// between pieces.
 const PIECE: usize = 2048;
 
-/// [`record_flushing`] for a multisampled target: the draw once per sample plane the sample
+/// [`record_pieces`] for a multisampled target: the draw once per sample plane the sample
 /// coverage mask keeps, moved to the plane's sample position ([`multisample`]). A plane's
-/// frame is not flushed during the draw: the caller's `flush` is for the whole frame.
+/// frame is not flushed during the draw: a flush is for the whole frame, planes and resolve.
 fn record_samples(
     state: &RenderState,
     draw: &DrawCall<'_>,
@@ -61,31 +61,43 @@ fn record_samples(
     {
         if let Some(pass) = pass {
             plane_state.sample = Some(pass);
-            record_flushing(&plane_state, draw, plane, &mut |_| {})?;
+            record_pieces(&plane_state, draw, plane, None)?;
         }
     }
     Ok(())
 }
 
 /// Transforms, clips and sets up `draw` with `state`, recording its primitives in `frame`
-/// (for a target of `frame`'s size and format) for a later [`Frame::flush`].
+/// (for a target of `frame`'s size and format) for a later [`Frame::flush_into`]. The frame
+/// grows with the draw: for draws of any size, [`record_into`] bounds it.
 pub fn record(
     state: &RenderState,
     draw: &DrawCall<'_>,
     frame: &mut Frame,
 ) -> Result<(), OutOfMemory> {
-    record_flushing(state, draw, frame, &mut |_| {})
+    record_pieces(state, draw, frame, None)
 }
 
-/// [`record`], calling `flush` whenever `frame` is full between pieces of the draw, so a
-/// draw of any size rasterizes from a working set that fits in cache. With several
-/// threads ([`bin::thread_count`]), consecutive pieces are transformed and set up in
-/// parallel and binned in order, so the frame is the same as with one.
-pub fn record_flushing(
+/// [`record`] for the frame bound to `target`, rasterizing into `target` whenever the frame
+/// is full between pieces of the draw, so a draw of any size rasterizes from a working set
+/// that fits in cache. With several threads ([`bin::thread_count`]), consecutive pieces
+/// are transformed and set up in parallel and binned in order, so the frame is the same as
+/// with one.
+pub fn record_into(
     state: &RenderState,
     draw: &DrawCall<'_>,
     frame: &mut Frame,
-    flush: &mut dyn FnMut(&mut Frame),
+    target: &mut Target,
+) -> Result<(), OutOfMemory> {
+    record_pieces(state, draw, frame, Some(target))
+}
+
+/// [`record`] and [`record_into`]: without a target the frame is never flushed.
+fn record_pieces(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    frame: &mut Frame,
+    mut target: Option<&mut Target>,
 ) -> Result<(), OutOfMemory> {
     let bounds = state.pixel_bounds(frame.bounds());
     if bounds.is_empty() {
@@ -99,7 +111,9 @@ pub fn record_flushing(
     // A flush forgets the frame's keys: the piece after it registers this one again.
     let mut make_room = |frame: &mut Frame, key: &mut u32| {
         if frame.is_full() {
-            flush(frame);
+            if let Some(t) = target.as_deref_mut() {
+                frame.flush_into(t);
+            }
             *key = frame.key(fragment.clone());
         }
     };
@@ -240,7 +254,7 @@ pub fn render(
 ) -> Result<(), OutOfMemory> {
     let mut frame = Frame::for_target(target);
     record(state, draw, &mut frame)?;
-    frame.flush(target, bin::thread_count());
+    frame.flush_into(target);
     Ok(())
 }
 

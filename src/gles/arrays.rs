@@ -3,7 +3,7 @@
 use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
 use super::buffer::lock_objects;
-use super::context::{lock_target, Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
+use super::context::{Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
 use super::ffi::client_bytes;
 use super::objects::Binding;
 use super::tokens::*;
@@ -236,7 +236,7 @@ impl Context {
             return;
         }
         // Make room first: the frame must not flush while the share group is locked below.
-        self.with_frame(|_| ());
+        self.with_frame(|_, _| ());
         // Before the share group is locked: the state snapshots textures, which locks it.
         let state = self.render_state();
         let shared = self.shared.clone();
@@ -300,14 +300,8 @@ impl Context {
         call.point_size = point_size;
         call.matrix_index = matrix_index;
         call.weight = weight;
-        let surface = self.draw_surface();
-        let mut flush = |frame: &mut core::Frame| {
-            if let Some(s) = &surface {
-                frame.flush(&mut lock_target(s.as_ref()), core::bin::thread_count());
-            }
-        };
         let recorded =
-            self.with_frame(|frame| core::record_flushing(&state, &call, frame, &mut flush));
+            self.with_frame(|frame, target| core::record_into(&state, &call, frame, target));
         if let Some(Err(_)) = recorded {
             self.set_error(GL_OUT_OF_MEMORY);
         }

@@ -43,7 +43,7 @@ impl Context {
         if !self.framebuffer_ready() {
             return;
         }
-        let Some(b) = self.with_frame(|f| f.bounds()) else {
+        let Some(b) = self.with_frame(|f, _| f.bounds()) else {
             return;
         };
         if b.is_empty() {
@@ -128,7 +128,9 @@ impl Context {
                 call.texcoord[u] = AttribSource::Array(array(data));
             }
         }
-        if let Some(Err(_)) = self.with_frame(|frame| core::record(&rs, &call, frame)) {
+        if let Some(Err(_)) =
+            self.with_frame(|frame, target| core::record_into(&rs, &call, frame, target))
+        {
             self.set_error(GL_OUT_OF_MEMORY);
         }
     }

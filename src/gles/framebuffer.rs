@@ -34,7 +34,7 @@ impl Context {
         let (color, depth, stencil) = (self.clear_color, self.clear_depth, self.clear_stencil);
         let (color_mask, depth_mask, stencil_mask) =
             (self.color_mask, self.depth_mask, self.stencil_writemask);
-        self.with_frame(|frame| {
+        self.with_frame(|frame, _| {
             let rect = state.pixel_bounds(frame.bounds());
             let format = frame.format();
             if mask & GL_COLOR_BUFFER_BIT != 0 {

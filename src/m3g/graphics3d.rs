@@ -358,7 +358,7 @@ impl Graphics3D {
     /// pixels; a `core::Target` is returned. Nothing bound: nothing happens.
     pub fn release_target(&mut self) -> Option<Target> {
         let mut b = self.bound.take()?;
-        b.frame.flush(&mut b.target, core::bin::thread_count());
+        b.frame.flush_into(&mut b.target);
         match b.image {
             Some(img) => {
                 let mut d = img.dm();
@@ -385,7 +385,7 @@ impl Graphics3D {
     /// The bound `core::Target` with every pending pixel written (for any kind of target).
     pub fn target(&mut self) -> Option<&Target> {
         let b = self.bound.as_mut()?;
-        b.frame.flush(&mut b.target, core::bin::thread_count());
+        b.frame.flush_into(&mut b.target);
         Some(&b.target)
     }
 
@@ -582,7 +582,7 @@ impl Graphics3D {
             match image.filter(|_| crop[2] > 0 && crop[3] > 0) {
                 None => b.frame.clear_color(rect, format.color.encode(bg_rgba), 0),
                 Some(img) => {
-                    b.frame.flush(&mut b.target, core::bin::thread_count());
+                    b.frame.flush_into(&mut b.target);
                     let d = img.d();
                     let th = b.target.height() as i32;
                     let tw = b.target.width() as usize;
@@ -625,7 +625,7 @@ impl Graphics3D {
 
     fn flush(&mut self) {
         if let Some(b) = self.bound.as_mut() {
-            b.frame.flush(&mut b.target, core::bin::thread_count());
+            b.frame.flush_into(&mut b.target);
         }
     }
 
@@ -772,9 +772,7 @@ impl Graphics3D {
                     draw_sprite(&s, b, sprite, app, modelview, item.alpha);
                 }
             }
-            if b.frame.is_full() {
-                b.frame.flush(&mut b.target, core::bin::thread_count());
-            }
+            b.frame.flush_if_full(&mut b.target);
         }
         // Textures unused for a while are dropped.
         let calls = textures.calls;
@@ -1472,9 +1470,7 @@ fn draw_submesh(
         stats.vertices_transformed += (hi - lo + 1) as u64;
     }
     // Out of memory drops the draw (M3G has no such exception).
-    let target = &mut b.target;
-    let mut flush = |f: &mut Frame| f.flush(target, core::bin::thread_count());
-    let _ = core::record_flushing(s, &call, &mut b.frame, &mut flush);
+    let _ = core::record_into(s, &call, &mut b.frame, &mut b.target);
 }
 
 fn component_type(size: i32) -> core::ComponentType {
@@ -1639,7 +1635,7 @@ fn draw_sprite(
             normalized: false,
         }),
     );
-    let _ = core::record(&s, &call, &mut b.frame);
+    let _ = core::record_into(&s, &call, &mut b.frame, &mut b.target);
 }
 
 /// The name of an `Image2D` format, for messages.
