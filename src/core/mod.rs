@@ -2,6 +2,7 @@
 //! machines and the M3G scene graph, describe what to draw as a [`RenderState`] plus a
 //! [`DrawCall`] and hand it to [`render`], which runs
 //! vertex → clip → setup → bin → raster → fragment into a [`Target`].
+#![forbid(unsafe_code)]
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;

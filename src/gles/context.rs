@@ -1,6 +1,7 @@
 //! A GL ES 1.1 context: the state machine behind the `gl*` entry points. State is kept in
 //! the specification's float form; [`Context::render_state`] turns it into the core's
 //! [`RenderState`] for each draw.
+#![forbid(unsafe_code)]
 
 use std::sync::{Arc, Mutex, MutexGuard};
 

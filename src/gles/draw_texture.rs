@@ -8,6 +8,7 @@
 //! coordinates come from the crop rectangles, untransformed by the texture matrices and never
 //! generated; the color is the current color, unlit. Fragments see fog at eye distance 0 (the
 //! rectangle has no eye-space position), then every per-fragment operation.
+#![forbid(unsafe_code)]
 
 use glam::{Mat4, Vec3};
 

@@ -1,4 +1,5 @@
 //! Whole-framebuffer operations: clears and pixel read-back.
+#![forbid(unsafe_code)]
 
 use crate::core::target::keep_mask;
 use crate::core::{ColorFormat, Target};

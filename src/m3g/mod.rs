@@ -174,6 +174,7 @@
 //!
 //! [`Loader`] reads .m3g and PNG files ([`loader`]); [`writer`] saves any object graph as a
 //! .m3g file the Loader reads back.
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 mod animation;
