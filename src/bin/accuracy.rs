@@ -25,7 +25,7 @@ mod edges;
 #[allow(dead_code)]
 #[path = "bench/scene.rs"]
 mod scene;
-#[path = "accuracy/scenes.rs"]
+#[path = "../../tests/common/scenes.rs"]
 mod scenes;
 
 use depth::{ideal_separation, measured_separation};

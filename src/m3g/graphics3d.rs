@@ -24,11 +24,12 @@ use super::appearance::{
     Appearance, Background, CompositingMode, Fog, FogData, MaterialData, PolygonMode, Texture2D,
     TextureData, MAX_TEXTURE_DIMENSION,
 };
+use super::camera::Camera;
 use super::error::{iae, ioobe, ise, Result};
 use super::image::{Image2D, ImageData};
+use super::light::Light;
 use super::mesh::{Mesh, Sprite3D, MAX_SPRITE_CROP_DIMENSION};
 use super::node::{node_data, root_of, to_ancestor, NodeExt, World};
-use super::nodes::{Camera, Light};
 use super::object::{tf, Handle, Kind, ObjRef};
 use super::transform::{invert, Transform};
 use super::vertex::{IndexBuffer, VertexBuffer, VertexBufferData, NUM_TEXTURE_UNITS};
