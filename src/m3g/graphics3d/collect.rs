@@ -3,13 +3,13 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
-use super::super::appearance::{Appearance, CompositingMode};
-use super::super::error::{ise, Result};
-use super::super::light::Light;
-use super::super::mesh::{Mesh, Sprite3D};
-use super::super::node::{node_data, to_ancestor};
-use super::super::object::{tf, Handle, Kind, ObjRef};
-use super::super::vertex::{IndexBuffer, VertexBuffer, VertexBufferData};
+use crate::m3g::appearance::{Appearance, CompositingMode};
+use crate::m3g::error::{ise, Result};
+use crate::m3g::light::Light;
+use crate::m3g::mesh::{Mesh, Sprite3D};
+use crate::m3g::node::{node_data, to_ancestor};
+use crate::m3g::object::{tf, Handle, Kind, ObjRef};
+use crate::m3g::vertex::{IndexBuffer, VertexBuffer, VertexBufferData};
 
 /// One thing to draw, found in a scene graph.
 pub(super) struct Item {
@@ -43,7 +43,7 @@ pub(super) fn collect_lights(world: &ObjRef, out: &mut Vec<(Light, Mat4)>) {
                     .map(|g| g.children.clone())
                     .unwrap_or_default()
                     .into_iter()
-                    .chain(super::super::deform::skeleton_of(&r))
+                    .chain(crate::m3g::deform::skeleton_of(&r))
                     .collect::<Vec<_>>(),
                 matches!(i.kind, Kind::Light(_)),
             )
@@ -117,7 +117,7 @@ pub(super) fn collect_at(
                 }
                 stack.push(Step::Emit(r.clone(), m, alpha, scope));
                 // A SkinnedMesh's skeleton is its child branch.
-                if let Some(skeleton) = super::super::deform::skeleton_of(&r) {
+                if let Some(skeleton) = crate::m3g::deform::skeleton_of(&r) {
                     let sm = tf(&skeleton).world(m);
                     stack.push(Step::Node(skeleton, sm, alpha));
                 }
@@ -135,7 +135,7 @@ pub(super) fn collect_at(
 /// The items of one Mesh or Sprite3D.
 fn emit(r: &ObjRef, m: Mat4, alpha: f32, scope: i32, out: &mut Vec<Item>) -> Result<()> {
     // MorphingMesh / SkinnedMesh: the deformed copy (recomputed only when needed).
-    let deformed = super::super::deform::deformed_vertex_buffer(r)?;
+    let deformed = crate::m3g::deform::deformed_vertex_buffer(r)?;
     if let Some(mesh) = Mesh::accepts(&r.borrow()).then(|| Mesh(r.clone())) {
         // Only a plain Mesh is culled against the bounds of its positions (a deformed
         // copy's arrays are rewritten in place).

@@ -1,6 +1,7 @@
-//! Drawing a submesh: its Appearance becomes a `RenderState` (through the translations in
-//! `appearance.rs`), its VertexBuffer a `DrawCall`, recorded into the bound frame; and the
-//! core textures made from the Texture2D images, kept across render calls.
+//! Drawing what [`super::collect`] found: layer by layer, opaque before blended, culled
+//! against the frustum; a submesh's Appearance becomes a `RenderState` (through the
+//! translations in `appearance.rs`), its VertexBuffer a `DrawCall`, recorded into the bound
+//! frame. Also the core textures made from Texture2D images, kept across render calls.
 
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -15,22 +16,32 @@ use crate::core::{
     self, AttribArray, AttribSource, DrawCall, Indices, Primitive, RenderState, Viewport,
 };
 
-use super::super::appearance::{
+use super::collect::{outside_frustum, Item, What};
+use super::sprite::draw_sprite;
+use super::{Bound, Graphics3D, RenderStats, MAX_LIGHTS};
+use crate::m3g::appearance::{
     apply_compositing, apply_polygon_mode, argb_to_rgba, core_fog, core_material, rgba_of, tex_env,
     Appearance, Texture2D, TextureData,
 };
-use super::super::error::{ise, Result};
-use super::super::image::{Image2D, ImageData};
-use super::super::light::Light;
-use super::super::node::node_data;
-use super::super::object::{tf, Handle};
-use super::super::transform::invert;
-use super::super::vertex::{IndexBuffer, VertexBuffer};
-use super::collect::{outside_frustum, Item, What};
-use super::sprite::draw_sprite;
-use super::{Bound, EyeLight, Graphics3D, RenderStats, MAX_LIGHTS};
+use crate::m3g::error::{ise, Result};
+use crate::m3g::image::{Image2D, ImageData};
+use crate::m3g::light::Light;
+use crate::m3g::node::node_data;
+use crate::m3g::object::{tf, Handle};
+use crate::m3g::transform::invert;
+use crate::m3g::vertex::{IndexBuffer, VertexBuffer};
+
+/// A light as the core takes it (eye coordinates, intensity folded into the colors) with
+/// the scope of its node.
+#[derive(Clone, Copy, Debug)]
+struct EyeLight {
+    light: CoreLight,
+    scope: i32,
+}
 
 impl Graphics3D {
+    /// Draws `items` with the current camera and lights into the bound target, flushing
+    /// whenever the frame fills.
     pub(super) fn draw_items(&mut self, mut items: Vec<Item>) -> Result<()> {
         let Some((camera, cam_to_world)) = self.camera.clone() else {
             return ise("no camera");
@@ -86,7 +97,7 @@ impl Graphics3D {
     /// The enabled lights of the light array in eye coordinates, as core lights (M3G §2.6:
     /// the intensity scales the colors; AMBIENT has only an ambient color, the others only
     /// diffuse and specular; directional lights shine along their local −Z).
-    pub(super) fn eye_lights(&self, view: &Mat4) -> Vec<EyeLight> {
+    fn eye_lights(&self, view: &Mat4) -> Vec<EyeLight> {
         let mut out = Vec::new();
         for (light, m) in self.lights.iter().flatten() {
             let nd = node_data(&light.0);
@@ -129,7 +140,7 @@ impl Graphics3D {
         out
     }
 
-    pub(super) fn base_state(&self, projection: Mat4) -> RenderState {
+    fn base_state(&self, projection: Mat4) -> RenderState {
         let b = self.bound.as_ref().unwrap();
         let (tw, th) = (b.target.width() as i32, b.target.height() as i32);
         let [x, y, w, h] = self.viewport;

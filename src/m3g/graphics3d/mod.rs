@@ -17,7 +17,6 @@ use std::rc::Rc;
 
 use glam::Mat4;
 
-use crate::core::state::Light as CoreLight;
 use crate::core::{self, ColorFormat, DepthFormat, Frame, Rect, Target, TargetFormat};
 
 use super::appearance::{argb_to_rgba, Appearance, Background, MAX_TEXTURE_DIMENSION};
@@ -59,14 +58,6 @@ struct Bound {
     format: i32,
     depth: bool,
     hints: i32,
-}
-
-/// A light as the core takes it (eye coordinates, intensity folded into the colors) with
-/// the scope of its node.
-#[derive(Clone, Copy, Debug)]
-struct EyeLight {
-    light: CoreLight,
-    scope: i32,
 }
 
 /// What rendering has done since the context was made or [`Graphics3D::reset_stats`] was

@@ -8,9 +8,9 @@ use crate::core::{
     self, AttribArray, AttribSource, DrawCall, Indices, Primitive, RenderState, ShadeModel,
 };
 
-use super::super::appearance::{apply_compositing, core_fog, Appearance};
-use super::super::mesh::Sprite3D;
 use super::Bound;
+use crate::m3g::appearance::{apply_compositing, core_fog, Appearance};
+use crate::m3g::mesh::Sprite3D;
 
 /// A sprite's draw call: triangles with a color per vertex and nothing else (submeshes
 /// build theirs in `draw::draw_submesh`).
