@@ -89,6 +89,8 @@ const EVIDENCE: &[(&str, &[&str])] = &[
 /// The extension strings of a fresh pbuffer context, made through the library's own entry
 /// points (linked into this test as the rlib).
 fn extension_strings() -> (String, String) {
+    // SAFETY: the library's own entry points, called as a C program would, with live
+    // attribute lists and out-parameters.
     unsafe {
         let dpy = eglGetDisplay(std::ptr::null_mut());
         assert!(!dpy.is_null());

@@ -3,7 +3,7 @@
 //! pass with depth function EQUAL hits exactly the pixels the first pass left visible; and
 //! the image does not depend on the thread count (each band of rows is a tile).
 
-#[path = "../src/bin/accuracy/scenes.rs"]
+#[path = "common/scenes.rs"]
 mod scenes;
 
 use glam::Mat4;

@@ -345,6 +345,7 @@ fn a_reference_to_a_fifo_does_not_block() {
     let d = tmp("fifo");
     let pipe = d.join("pipe.m3g");
     let c = std::ffi::CString::new(pipe.to_str().unwrap()).unwrap();
+    // SAFETY: `c` is a NUL-terminated path that outlives the call.
     assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
     std::fs::write(d.join("top.m3g"), references(&["pipe.m3g"])).unwrap();
     let top = d.join("top.m3g");

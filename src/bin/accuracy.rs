@@ -25,7 +25,7 @@ mod edges;
 #[allow(dead_code)]
 #[path = "bench/scene.rs"]
 mod scene;
-#[path = "accuracy/scenes.rs"]
+#[path = "../../tests/common/scenes.rs"]
 mod scenes;
 
 use depth::{ideal_separation, measured_separation};
@@ -115,11 +115,9 @@ fn bench_scene_ours(s: &scene::Scene, q: Quality, reference: &Target) -> ErrorSt
             )
         };
         core::record(&st, &call, &mut frame).expect("memory");
-        if frame.is_full() {
-            frame.flush(&mut fast, core::bin::thread_count());
-        }
+        frame.flush_if_full(&mut fast);
     }
-    frame.flush(&mut fast, core::bin::thread_count());
+    frame.flush_into(&mut fast);
     reference::compare(&fast, reference)
 }
 
@@ -197,7 +195,7 @@ fn own_scene(
             &mut slow,
         );
     }
-    frame.flush(&mut fast, core::bin::thread_count());
+    frame.flush_into(&mut fast);
     reference::compare(&fast, &slow)
 }
 

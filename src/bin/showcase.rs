@@ -25,8 +25,8 @@ use std::time::Instant;
 use glam::Mat4;
 use GLES_CM::core::reference::{self, compare};
 use GLES_CM::core::{
-    bin, AttribArray, AttribSource, ColorFormat, CompareFunc, ComponentType, DepthFormat, DrawCall,
-    Frame, Indices, Primitive, RenderState, Target, TargetFormat,
+    pool, AttribArray, AttribSource, ColorFormat, CompareFunc, ComponentType, DepthFormat,
+    DrawCall, Frame, Indices, Primitive, RenderState, Target, TargetFormat,
 };
 
 const WIDTH: u32 = 640;
@@ -186,7 +186,7 @@ fn speed_against_error(out: &Path) {
         "-",
         "-"
     );
-    let mut thread_counts = vec![1, bin::thread_count()];
+    let mut thread_counts = vec![1, pool::thread_count()];
     thread_counts.dedup();
     for threads in thread_counts {
         let (image, time) = render_timed(&scene, threads);

@@ -6,6 +6,7 @@
 //! The variables are read once, at the first swap or finish. Frames are numbered from 0 in
 //! the order they are captured, across all surfaces and threads of the process. Surfaces
 //! without alpha bits are written as RGB.
+#![forbid(unsafe_code)]
 
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};

@@ -4,6 +4,7 @@
 //! the single-sample configs, 19–36 the same list with `EGL_SAMPLE_BUFFERS` 1 and
 //! `EGL_SAMPLES` 4 ([`crate::core::multisample`]); the sort puts fewer samples first, so a
 //! program that does not ask for samples gets a single-sample config.
+#![forbid(unsafe_code)]
 
 use std::cmp::Ordering;
 

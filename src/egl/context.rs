@@ -1,5 +1,6 @@
 //! EGL rendering contexts: an OpenGL ES 1.x [`gles::Context`](crate::gles::Context) with the
 //! config it was created for.
+#![forbid(unsafe_code)]
 
 use std::sync::{Arc, Mutex};
 

@@ -9,6 +9,7 @@
 //! binding holds its own, so a context or surface that is destroyed (or whose display is
 //! terminated) while current stays alive until it is released, while its handle is already
 //! invalid.
+#![forbid(unsafe_code)]
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::ffi::CStr;

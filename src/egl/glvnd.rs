@@ -218,6 +218,7 @@ mod tests {
             patch_thread_attach: ptr::null(),
             find_native_display_platform: ptr::null(),
         };
+        // SAFETY: `imports` is a live table of the layout glvnd passes.
         let ok = unsafe {
             __egl_Main(
                 version,
@@ -241,9 +242,13 @@ mod tests {
         let (ok, imports) = main_with(2);
         assert_eq!(ok, EGL_TRUE);
         let gpa = imports.get_proc_address.unwrap();
+        // SAFETY: the names are NUL-terminated, or null, which the function accepts.
         assert!(!unsafe { gpa(c"eglInitialize".as_ptr()) }.is_null());
+        // SAFETY: as above.
         assert!(!unsafe { gpa(c"glClear".as_ptr()) }.is_null());
+        // SAFETY: as above.
         assert!(unsafe { gpa(c"glNotAFunction".as_ptr()) }.is_null());
+        // SAFETY: as above.
         assert!(unsafe { gpa(ptr::null()) }.is_null());
         assert_eq!(
             (imports.get_supports_api.unwrap())(EGL_OPENGL_ES_API),
@@ -251,6 +256,7 @@ mod tests {
         );
         assert_eq!((imports.get_supports_api.unwrap())(0x30A2), EGL_FALSE);
         let ext = (imports.get_vendor_string.unwrap())(VENDOR_STRING_PLATFORM_EXTENSIONS);
+        // SAFETY: the vendor string is a static NUL-terminated string.
         assert_eq!(unsafe { CStr::from_ptr(ext) }, PLATFORM_EXTENSIONS);
         assert!((imports.get_vendor_string.unwrap())(7).is_null());
     }
@@ -258,17 +264,22 @@ mod tests {
     #[test]
     fn platform_displays() {
         let gpd = get_platform_display;
+        // SAFETY: the attribute lists here and below are null or EGL_NONE-terminated.
         let dpy = unsafe { gpd(EGL_NONE as EGLenum, ptr::null_mut(), ptr::null()) };
         assert_eq!(dpy as usize, d::DISPLAY_HANDLE);
+        // SAFETY: as above.
         let dpy = unsafe { gpd(d::PLATFORM_SURFACELESS_MESA, ptr::null_mut(), ptr::null()) };
         assert_eq!(dpy as usize, d::DISPLAY_HANDLE);
         let none = [EGL_NONE as EGLAttrib];
+        // SAFETY: as above.
         let dpy = unsafe { gpd(d::PLATFORM_SURFACELESS_MESA, ptr::null_mut(), none.as_ptr()) };
         assert_eq!(dpy as usize, d::DISPLAY_HANDLE);
         // X11 (EGL_PLATFORM_X11_KHR) is another vendor's.
+        // SAFETY: as above.
         let dpy = unsafe { gpd(0x31D5, ptr::null_mut(), ptr::null()) };
         assert!(dpy.is_null());
         let attrs = [0x3001, 1 << 40, EGL_NONE as EGLAttrib];
+        // SAFETY: as above.
         let dpy = unsafe {
             gpd(
                 d::PLATFORM_SURFACELESS_MESA,

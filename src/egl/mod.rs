@@ -2,7 +2,8 @@
 //! contexts and the per-thread current binding, with the C entry points in `ffi`.
 //!
 //! Core logic lives in safe modules; `ffi` (the C entry points) and `glvnd` (the glvnd vendor
-//! interface) are the only places with `unsafe` code.
+//! interface) are the only places with `unsafe` code; every other file forbids it
+//! (`#![forbid(unsafe_code)]`), so the compiler keeps it so.
 
 pub mod capture;
 pub mod config;

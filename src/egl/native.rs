@@ -4,6 +4,7 @@
 //! below, owned by the application, which must keep the struct and its pixels valid (and not
 //! move or resize them) for as long as an EGL surface made from it exists. `build.rs` copies
 //! these definitions, with their documentation, into `include/EGL/eglplatform.h`.
+#![forbid(unsafe_code)]
 
 use std::ffi::c_void;
 

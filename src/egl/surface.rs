@@ -3,6 +3,7 @@
 //!
 //! Pixmaps and windows live in client memory; the `ffi` layer wraps that memory in a
 //! [`NativeMemory`] so that everything here is safe code over byte slices.
+#![forbid(unsafe_code)]
 
 use std::sync::{Mutex, MutexGuard};
 

@@ -1,5 +1,6 @@
 //! Per-thread EGL state: the last error, the bound client API and the current context with
 //! its draw and read surfaces.
+#![forbid(unsafe_code)]
 
 use std::cell::RefCell;
 use std::sync::atomic::{AtomicI32, AtomicU64, Ordering};

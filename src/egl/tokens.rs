@@ -4,7 +4,7 @@
 //! `// Version: EGL_VERSION_1_x` line, which `build.rs` turns into one `#ifndef EGL_VERSION_1_x`
 //! block of `include/EGL/egl.h`. Handle-valued tokens are null pointers here; the header spells
 //! them `EGL_CAST(type, 0)` like the standard one, and `-1` values as `EGL_CAST(EGLint,-1)`.
-
+#![forbid(unsafe_code)]
 #![allow(non_upper_case_globals)] // EGL_COLORSPACE_sRGB keeps its registry spelling.
 
 use std::ptr::null_mut;

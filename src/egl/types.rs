@@ -1,4 +1,5 @@
 //! The EGL scalar and handle types, as the Khronos headers define them for this platform.
+#![forbid(unsafe_code)]
 
 use std::ffi::c_void;
 

@@ -1,11 +1,13 @@
 //! Tests of the fixed-function state areas (per-fragment, points and lines, clip planes,
 //! lighting, fog, current values, texture environments) through the safe API.
+#![forbid(unsafe_code)]
 
 use std::sync::{Arc, Mutex};
 
 use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
 
 use super::context::{Context, Surface, MAX_TEXTURE_UNITS};
+use super::ffi::ClientPtr;
 use super::params::{fixed_reply, Params};
 use super::tokens::*;
 use super::types::*;
@@ -245,13 +247,25 @@ fn current_values_and_units() {
     c.active_texture(beyond);
     assert_eq!(c.take_error(), GL_INVALID_ENUM);
     c.client_active_texture(GL_TEXTURE1);
-    c.array_pointer(super::arrays::ArrayKind::TexCoord, 2, GL_SHORT, 8, 0x1000);
+    c.array_pointer(
+        super::arrays::ArrayKind::TexCoord,
+        2,
+        GL_SHORT,
+        8,
+        ClientPtr::offset(0x1000),
+    );
     assert_eq!(ints(&mut c, GL_TEXTURE_COORD_ARRAY_SIZE), [2]);
     assert_eq!(c.get_pointer(GL_TEXTURE_COORD_ARRAY_POINTER), Some(0x1000));
     c.client_active_texture(GL_TEXTURE0);
     assert_eq!(ints(&mut c, GL_TEXTURE_COORD_ARRAY_SIZE), [4]);
     assert_eq!(c.get_pointer(GL_TEXTURE_COORD_ARRAY_POINTER), Some(0));
-    c.array_pointer(super::arrays::ArrayKind::PointSize, 1, GL_SHORT, 0, 0);
+    c.array_pointer(
+        super::arrays::ArrayKind::PointSize,
+        1,
+        GL_SHORT,
+        0,
+        ClientPtr::offset(0),
+    );
     assert_eq!(c.take_error(), GL_INVALID_ENUM);
     assert_eq!(c.get_pointer(GL_TEXTURE_COORD_ARRAY), None);
     assert_eq!(c.take_error(), GL_INVALID_ENUM);

@@ -1,10 +1,11 @@
 //! Client vertex arrays, the current vertex values, and the draw calls that read them.
+#![forbid(unsafe_code)]
 
 use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
 use super::buffer::lock_objects;
-use super::context::{lock_target, Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
-use super::ffi::client_bytes;
+use super::context::{Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
+use super::ffi::ClientPtr;
 use super::objects::Binding;
 use super::tokens::*;
 use super::tokens_ext::*;
@@ -16,7 +17,7 @@ pub struct ArrayPointer {
     pub size: i32,
     pub ty: GLenum,
     pub stride: i32,
-    pub ptr: usize,
+    pub ptr: ClientPtr,
     pub enabled: bool,
     /// The buffer object bound to `GL_ARRAY_BUFFER` when the pointer was set (none: client
     /// memory). With one, `ptr` is a byte offset into it.
@@ -29,7 +30,7 @@ impl ArrayPointer {
             size,
             ty: GL_FLOAT,
             stride: 0,
-            ptr: 0,
+            ptr: ClientPtr::offset(0),
             enabled: false,
             buffer: Binding::NONE,
         }
@@ -54,7 +55,7 @@ pub struct ClientArrays {
 impl ArrayPointer {
     /// Whether the pointer names any data: a client address or a buffer object.
     pub fn is_set(&self) -> bool {
-        self.ptr != 0 || !self.buffer.is_none()
+        self.ptr.addr() != 0 || !self.buffer.is_none()
     }
 }
 
@@ -139,7 +140,7 @@ impl Context {
         size: i32,
         ty: GLenum,
         stride: i32,
-        ptr: usize,
+        ptr: ClientPtr,
     ) {
         let (sizes, types): (&[i32], &[GLenum]) = match kind {
             ArrayKind::Vertex => (&[2, 3, 4], &[GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT]),
@@ -168,8 +169,14 @@ impl Context {
         a.size = size;
         a.ty = ty;
         a.stride = stride;
-        a.ptr = ptr;
         a.buffer = self.buffers.array.clone();
+        // With a buffer object bound the value is an offset: it must never be read as an
+        // address, whatever a later binding says.
+        a.ptr = if a.buffer.is_none() {
+            ptr
+        } else {
+            ClientPtr::offset(ptr.addr())
+        };
     }
 
     pub fn client_state(&mut self, array: GLenum, on: bool) {
@@ -236,7 +243,7 @@ impl Context {
             return;
         }
         // Make room first: the frame must not flush while the share group is locked below.
-        self.with_frame(|_| ());
+        self.with_frame(|_, _| ());
         // Before the share group is locked: the state snapshots textures, which locks it.
         let state = self.render_state();
         let shared = self.shared.clone();
@@ -300,14 +307,8 @@ impl Context {
         call.point_size = point_size;
         call.matrix_index = matrix_index;
         call.weight = weight;
-        let surface = self.draw_surface();
-        let mut flush = |frame: &mut core::Frame| {
-            if let Some(s) = &surface {
-                frame.flush(&mut lock_target(s.as_ref()), core::bin::thread_count());
-            }
-        };
         let recorded =
-            self.with_frame(|frame| core::record_flushing(&state, &call, frame, &mut flush));
+            self.with_frame(|frame, target| core::record_into(&state, &call, frame, target));
         if let Some(Err(_)) = recorded {
             self.set_error(GL_OUT_OF_MEMORY);
         }
@@ -401,14 +402,15 @@ fn array_view<'a>(
             .buffers
             .get(&a.buffer)
             .ok_or(ArrayError::OutOfRange)?;
-        buffer.range(a.ptr, len).ok_or(ArrayError::OutOfRange)?
+        buffer
+            .range(a.ptr.addr(), len)
+            .ok_or(ArrayError::OutOfRange)?
     } else {
-        if a.ptr.checked_add(len).is_none() || len > isize::MAX as usize {
+        if a.ptr.addr().checked_add(len).is_none() || len > isize::MAX as usize {
             return Err(ArrayError::TooLarge);
         }
-        // SAFETY: the application promised, when it passed this pointer to gl*Pointer, that
-        // it stays valid for every element the draw calls read; `len` covers exactly those.
-        unsafe { client_bytes(a.ptr, len) }
+        // `len` covers exactly the elements the draw reads: what the program vouched for.
+        a.ptr.bytes(len).ok_or(ArrayError::OutOfRange)?
     };
     Ok(AttribArray {
         data,

@@ -9,6 +9,7 @@
 //!
 //! A mapped buffer's storage never moves: `glBufferSubData` on a mapped buffer is
 //! `GL_INVALID_OPERATION`, and `glBufferData` unmaps before it replaces the storage.
+#![forbid(unsafe_code)]
 
 use super::context::{Context, SharedObjects};
 use super::get::Value;
@@ -429,6 +430,7 @@ mod context_tests {
     use crate::core::{ColorFormat, Target, TargetFormat};
     use crate::gles::arrays::ArrayKind;
     use crate::gles::context::{Context, Surface};
+    use crate::gles::ffi::ClientPtr;
     use crate::gles::tokens::*;
     use crate::gles::tokens_ext::*;
 
@@ -465,7 +467,7 @@ mod context_tests {
         c.bind_buffer(GL_ARRAY_BUFFER, name);
         let v = floats(&[-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0]);
         c.buffer_data(GL_ARRAY_BUFFER, v.len() as isize, Some(&v), GL_STATIC_DRAW);
-        c.array_pointer(ArrayKind::Vertex, 2, GL_FLOAT, 0, 0);
+        c.array_pointer(ArrayKind::Vertex, 2, GL_FLOAT, 0, ClientPtr::offset(0));
         c.client_state(GL_VERTEX_ARRAY, true);
         name
     }
@@ -496,9 +498,8 @@ mod context_tests {
             c.buffer_parameter(GL_ARRAY_BUFFER, GL_BUFFER_USAGE),
             Some(GL_DYNAMIC_DRAW as i32)
         );
+        // Writes through the mapping: `ffi::buffer`'s tests (this module has no `unsafe`).
         let p = c.map_buffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY_OES).unwrap();
-        // SAFETY: the store is 4 bytes and stays put while mapped.
-        unsafe { *p = 5 };
         c.buffer_sub_data(GL_ARRAY_BUFFER, 0, &[1]);
         assert_eq!(c.take_error(), GL_INVALID_OPERATION, "mapped");
         assert_eq!(c.map_buffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY_OES), None);
@@ -511,7 +512,7 @@ mod context_tests {
         assert!(!c.unmap_buffer(GL_ARRAY_BUFFER));
         assert_eq!(c.take_error(), GL_INVALID_OPERATION);
         let o = lock_objects(&c.shared);
-        assert_eq!(o.buffers.named(b).unwrap().data(), &[5, 2, 7, 8]);
+        assert_eq!(o.buffers.named(b).unwrap().data(), &[1, 2, 7, 8]);
     }
 
     #[test]
@@ -523,9 +524,15 @@ mod context_tests {
         assert_eq!(c.take_error(), GL_NO_ERROR);
         assert_eq!(s.0.lock().unwrap().pixel(4, 4), [0, 0, 0, 0], "skipped");
         // An offset past the end is skipped too.
-        c.array_pointer(ArrayKind::Vertex, 2, GL_FLOAT, 0, 1 << 40);
+        c.array_pointer(
+            ArrayKind::Vertex,
+            2,
+            GL_FLOAT,
+            0,
+            ClientPtr::offset(1 << 40),
+        );
         c.draw_arrays(GL_TRIANGLE_STRIP, 0, 1);
-        c.array_pointer(ArrayKind::Vertex, 2, GL_FLOAT, 0, 0);
+        c.array_pointer(ArrayKind::Vertex, 2, GL_FLOAT, 0, ClientPtr::offset(0));
         // Element buffer indices past the vertex data, and past the element buffer.
         let e = c.gen_buffers(1)[0];
         c.bind_buffer(GL_ELEMENT_ARRAY_BUFFER, e);

@@ -1,4 +1,5 @@
 //! User clip planes (ES 1.1 §2.11), stored in eye coordinates.
+#![forbid(unsafe_code)]
 
 use glam::Vec4;
 

@@ -1,6 +1,7 @@
 //! A GL ES 1.1 context: the state machine behind the `gl*` entry points. State is kept in
 //! the specification's float form; [`Context::render_state`] turns it into the core's
 //! [`RenderState`] for each draw.
+#![forbid(unsafe_code)]
 
 use std::sync::{Arc, Mutex, MutexGuard};
 
@@ -8,8 +9,8 @@ use glam::Mat4;
 
 use crate::core::state::Quality;
 use crate::core::{
-    bin, CompareFunc, CullFace, Frame, Rect, RenderState, ShadeModel, Target, TargetFormat,
-    Viewport, Winding,
+    CompareFunc, CullFace, Frame, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport,
+    Winding,
 };
 
 use super::arrays::ClientArrays;
@@ -322,31 +323,31 @@ impl Context {
         let d = self.draw_surface();
         if let (Some(frame), Some(d)) = (&mut self.frame, d) {
             if !frame.is_empty() {
-                frame.flush(&mut lock_target(d.as_ref()), bin::thread_count());
+                frame.flush_into(&mut lock_target(d.as_ref()));
             }
         }
     }
 
-    /// Runs `f` with the frame that records work for the draw surface (created to fit it),
-    /// flushing first when the frame is full. `None` without a draw surface.
-    pub(super) fn with_frame<R>(&mut self, f: impl FnOnce(&mut Frame) -> R) -> Option<R> {
+    /// Runs `f` with the frame that records work for the draw surface (created to fit it)
+    /// and the surface's target, locked for the call so that a draw can rasterize whenever
+    /// the frame fills ([`crate::core::record_into`]). A full frame is flushed first. `None`
+    /// without a draw surface.
+    pub(super) fn with_frame<R>(
+        &mut self,
+        f: impl FnOnce(&mut Frame, &mut Target) -> R,
+    ) -> Option<R> {
         let surface = self.draw_surface()?;
         self.fbo.dirty |= self.fbo.bound != 0;
-        let fits = {
-            let t = lock_target(surface.as_ref());
-            match &self.frame {
-                Some(fr) if fr.fits(&t) => true,
-                _ => {
-                    self.frame = Some(Frame::for_target(&t));
-                    false
-                }
+        let mut target = lock_target(surface.as_ref());
+        let frame = match &mut self.frame {
+            Some(fr) if fr.fits(&target) => {
+                // Only rasterize: the caller may hold the share group's lock.
+                fr.flush_if_full(&mut target);
+                fr
             }
+            slot => slot.insert(Frame::for_target(&target)),
         };
-        if fits && self.frame.as_ref().is_some_and(Frame::is_full) {
-            // Only rasterize: the caller may hold the share group's lock.
-            self.flush_frame();
-        }
-        self.frame.as_mut().map(f)
+        Some(f(frame, &mut target))
     }
 
     /// The format of what draws go to (the bound framebuffer object or the draw surface).

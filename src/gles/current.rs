@@ -1,5 +1,6 @@
 //! The calling thread's current GL context. EGL sets it in `eglMakeCurrent`; every `gl*`
 //! entry point reads it.
+#![forbid(unsafe_code)]
 
 use std::cell::RefCell;
 use std::sync::{Arc, Mutex, MutexGuard};

@@ -1,5 +1,6 @@
 //! Current vertex values other than the color (ES 1.1 §2.7), the active and client active
 //! texture units, and the queries of the vertex array layouts and pointers.
+#![forbid(unsafe_code)]
 
 use super::context::{Context, MAX_TEXTURE_UNITS};
 use super::get::Value;
@@ -67,13 +68,13 @@ impl Context {
         }
         let a = &self.arrays;
         Some(match pname {
-            GL_VERTEX_ARRAY_POINTER => a.vertex.ptr,
-            GL_NORMAL_ARRAY_POINTER => a.normal.ptr,
-            GL_COLOR_ARRAY_POINTER => a.color.ptr,
-            GL_TEXTURE_COORD_ARRAY_POINTER => a.texcoord[a.client_active_texture].ptr,
-            GL_POINT_SIZE_ARRAY_POINTER_OES => a.point_size.ptr,
-            GL_MATRIX_INDEX_ARRAY_POINTER_OES => a.matrix_index.ptr,
-            GL_WEIGHT_ARRAY_POINTER_OES => a.weight.ptr,
+            GL_VERTEX_ARRAY_POINTER => a.vertex.ptr.addr(),
+            GL_NORMAL_ARRAY_POINTER => a.normal.ptr.addr(),
+            GL_COLOR_ARRAY_POINTER => a.color.ptr.addr(),
+            GL_TEXTURE_COORD_ARRAY_POINTER => a.texcoord[a.client_active_texture].ptr.addr(),
+            GL_POINT_SIZE_ARRAY_POINTER_OES => a.point_size.ptr.addr(),
+            GL_MATRIX_INDEX_ARRAY_POINTER_OES => a.matrix_index.ptr.addr(),
+            GL_WEIGHT_ARRAY_POINTER_OES => a.weight.ptr.addr(),
             _ => {
                 self.bad_enum("pname", pname);
                 return None;

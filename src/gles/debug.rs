@@ -13,6 +13,7 @@
 //! synchronously (before the call that caused them returns), whatever
 //! `GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR` says. The callback runs after the context is unlocked,
 //! so one that calls GL does not deadlock.
+#![forbid(unsafe_code)]
 
 use std::collections::{HashMap, VecDeque};
 use std::ffi::c_void;

@@ -8,6 +8,7 @@
 //! coordinates come from the crop rectangles, untransformed by the texture matrices and never
 //! generated; the color is the current color, unlit. Fragments see fog at eye distance 0 (the
 //! rectangle has no eye-space position), then every per-fragment operation.
+#![forbid(unsafe_code)]
 
 use glam::{Mat4, Vec3};
 
@@ -43,7 +44,7 @@ impl Context {
         if !self.framebuffer_ready() {
             return;
         }
-        let Some(b) = self.with_frame(|f| f.bounds()) else {
+        let Some(b) = self.with_frame(|f, _| f.bounds()) else {
             return;
         };
         if b.is_empty() {
@@ -128,7 +129,9 @@ impl Context {
                 call.texcoord[u] = AttribSource::Array(array(data));
             }
         }
-        if let Some(Err(_)) = self.with_frame(|frame| core::record(&rs, &call, frame)) {
+        if let Some(Err(_)) =
+            self.with_frame(|frame, target| core::record_into(&rs, &call, frame, target))
+        {
             self.set_error(GL_OUT_OF_MEMORY);
         }
     }

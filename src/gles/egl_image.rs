@@ -4,6 +4,7 @@
 //!
 //! An image is the texel contents of its source at creation: a GL object made from it gets
 //! a copy, so later changes to one sibling are not seen by the others (CONFORMANCE.md).
+#![forbid(unsafe_code)]
 
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex, MutexGuard};

@@ -17,6 +17,7 @@
 //! texture's new contents (a sampler snapshot is taken when a draw is recorded). The
 //! assembled target is kept while the attachments and their versions stay the same, so a
 //! write-back does not force a reload.
+#![forbid(unsafe_code)]
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};

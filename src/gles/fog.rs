@@ -1,4 +1,5 @@
 //! Fog state (ES 1.1 §3.8).
+#![forbid(unsafe_code)]
 
 use super::context::Context;
 use super::get::Value;

@@ -1,4 +1,5 @@
 //! Whole-framebuffer operations: clears and pixel read-back.
+#![forbid(unsafe_code)]
 
 use crate::core::target::keep_mask;
 use crate::core::{ColorFormat, Target};
@@ -34,7 +35,7 @@ impl Context {
         let (color, depth, stencil) = (self.clear_color, self.clear_depth, self.clear_stencil);
         let (color_mask, depth_mask, stencil_mask) =
             (self.color_mask, self.depth_mask, self.stencil_writemask);
-        self.with_frame(|frame| {
+        self.with_frame(|frame, _| {
             let rect = state.pixel_bounds(frame.bounds());
             let format = frame.format();
             if mask & GL_COLOR_BUFFER_BIT != 0 {

@@ -2,6 +2,7 @@
 //!
 //! Every queryable value is produced once, in its natural type, by [`Context::state_value`];
 //! the four getters only convert, with the specification's rules (ES 1.1 §6.1.2).
+#![forbid(unsafe_code)]
 
 use crate::core::{fixed, MAX_VIEWPORT_DIM, SUBPIXEL_BITS};
 

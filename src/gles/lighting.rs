@@ -1,5 +1,6 @@
 //! Lighting state (ES 1.1 §2.12): lights, the light model and the material. Positions and
 //! spot directions are stored in eye coordinates, transformed when specified.
+#![forbid(unsafe_code)]
 
 use glam::{Mat3, Vec3, Vec4};
 

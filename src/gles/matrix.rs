@@ -1,4 +1,5 @@
 //! The matrix stacks and the operations on the current matrix.
+#![forbid(unsafe_code)]
 
 use glam::{Mat4, Vec3};
 

@@ -1,4 +1,8 @@
 //! The OpenGL ES 1.1 Common profile state machine and its C entry points.
+//!
+//! Only `ffi` (the entry points) has `unsafe` code. A `forbid` here would bind `ffi` too and
+//! could not be lifted there, so every other file of this module says
+//! `#![forbid(unsafe_code)]` itself.
 
 pub mod arrays;
 pub mod buffer;

@@ -11,6 +11,7 @@
 //!
 //! Orphaned objects (no name left) are freed by [`Names::sweep`], which every namespace
 //! operation runs; a binding dropped with its context frees its object at the next one.
+#![forbid(unsafe_code)]
 
 use std::collections::HashMap;
 use std::sync::Arc;

@@ -5,6 +5,7 @@
 //! the form its parameter has: a number, an enumerant or a color component. Fixed-point
 //! arguments are converted with `core::fixed` (ARCHITECTURE decision 1), except enumerants,
 //! which the `x` commands pass unconverted.
+#![forbid(unsafe_code)]
 
 use crate::core::fixed;
 

@@ -1,6 +1,7 @@
 //! Per-fragment operation state (ES 1.1 §4.1) and the polygon offset (§3.5.5): alpha test,
 //! stencil test, blending, logic op, sample coverage, and their translation into the core's
 //! [`RenderState`]. Sample coverage has no effect: no config has sample buffers.
+#![forbid(unsafe_code)]
 
 use crate::core::state::{
     AlphaTest, Blend, BlendEquation, BlendFactor, LogicOp, PolygonOffset, StencilOp, StencilTest,

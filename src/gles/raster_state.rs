@@ -1,5 +1,6 @@
 //! Point and line rasterization state (ES 1.1 §3.3, §3.4): widths, sizes and the point
 //! parameters of distance attenuation.
+#![forbid(unsafe_code)]
 
 use super::context::Context;
 use super::get::Value;

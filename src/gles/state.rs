@@ -1,6 +1,7 @@
 //! Simple state setters: capabilities, hints, per-fragment state, clear values, the viewport,
 //! scissor box and pixel storage. Each validates its arguments as the specification says and
 //! leaves the state untouched on error.
+#![forbid(unsafe_code)]
 
 use crate::core::{CullFace, Rect, ShadeModel, Winding, MAX_VIEWPORT_DIM};
 

@@ -1,5 +1,6 @@
 //! Context-level tests through the safe API, with an in-memory surface (the C programs in
 //! `c_tests/` cover the same ground through the ABI).
+#![forbid(unsafe_code)]
 
 use std::sync::{Arc, Mutex};
 

@@ -1,5 +1,6 @@
 //! Texture environments (ES 1.1 §3.7.12), one per texture unit, and the per-unit point
 //! sprite coordinate replacement (OES_point_sprite). Not part of any texture object.
+#![forbid(unsafe_code)]
 
 use crate::core::state::{Quality, TexGen};
 use crate::core::texenv as core_env;

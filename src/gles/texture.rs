@@ -11,6 +11,7 @@
 //! sample, so changing a texture needs no flush; only while a framebuffer object is bound,
 //! whose attachment may be that texture, does a change first complete the recorded work.
 //! [`Texture::version`] changes with each change, for caches that want to notice.
+#![forbid(unsafe_code)]
 
 use crate::core::fixed;
 use crate::core::texture::pvrtc::PvrtcFormat;

@@ -1,4 +1,5 @@
 //! OpenGL ES 1.1 Common profile token values (the Khronos registry's numbers).
+#![forbid(unsafe_code)]
 
 use super::types::*;
 

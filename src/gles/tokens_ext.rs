@@ -4,6 +4,7 @@
 //! `#ifndef GL_<ext>` block of `include/GLES/glext.h` (with its feature macro, tokens, function
 //! pointer typedefs and prototypes). An extension without tokens still gets its marker line.
 //! Keep one definition per name: a token that two extensions share lives under the first.
+#![forbid(unsafe_code)]
 
 use super::types::*;
 

@@ -1,5 +1,6 @@
 //! The GL scalar types, as the Khronos headers define them for this platform. cbindgen turns
 //! these aliases into the typedefs that prototypes in `include/GLES` use.
+#![forbid(unsafe_code)]
 
 use libc::{c_char, c_float, c_int, c_short, c_uchar, c_uint, c_ushort, c_void};
 

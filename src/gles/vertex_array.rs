@@ -8,6 +8,7 @@
 //! The bound object's state is the context's live state (`Context::arrays`,
 //! `Context::buffers.element_array`), so draws read it as before; binding another object
 //! parks the live state in the previous object's slot and takes the new one's.
+#![forbid(unsafe_code)]
 
 use super::arrays::ClientArrays;
 use super::context::Context;

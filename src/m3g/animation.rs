@@ -6,10 +6,10 @@ use std::rc::Rc;
 
 use glam::{Quat, Vec3};
 
+use super::camera::Camera;
 use super::error::{iae, Result};
 use super::keyframe::KeyframeSequence;
 use super::mesh::MAX_SPRITE_CROP_DIMENSION;
-use super::nodes::Camera;
 use super::object::{class_data, for_each_reachable, handle, Inner, Kind, ObjRef};
 
 #[derive(Clone, Debug)]

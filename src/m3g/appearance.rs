@@ -1,6 +1,12 @@
 //! `Appearance` and its components: `CompositingMode`, `PolygonMode`, `Material`, `Fog`,
 //! `Texture2D`; and `Background`.
 
+use glam::Vec4;
+
+use crate::core::state::{AlphaTest, Blend, BlendFactor, Material as CoreMaterial, Quality};
+use crate::core::texenv::{self, EnvMode, FogMode, TexEnv};
+use crate::core::{CompareFunc, CullFace, RenderState, ShadeModel, Winding};
+
 use super::error::{iae, ioobe, Result};
 use super::image::Image2D;
 use super::object::{class_data, handle, Inner, Kind, TransformableExt};
@@ -805,5 +811,158 @@ impl Background {
     /// `getCropHeight()`.
     pub fn crop_height(&self) -> i32 {
         self.d().crop[3]
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Translation into the core's state, beside the types it reads (as `gles/per_fragment.rs`
+// does for GL): `Graphics3D` calls these for each submesh and sprite.
+
+pub(crate) fn argb_to_rgba(c: u32) -> [f32; 4] {
+    let f = |s: u32| ((c >> s) & 0xFF) as f32 / 255.0;
+    [f(16), f(8), f(0), f(24)]
+}
+
+pub(crate) fn rgba_of(c: u32) -> Vec4 {
+    Vec4::from_array(argb_to_rgba(c))
+}
+
+/// Applies a CompositingMode (or its defaults) to `s`.
+pub(crate) fn apply_compositing(s: &mut RenderState, cm: Option<&CompositingMode>, depth: bool) {
+    let d = cm.map(|c| c.d().clone());
+    let (blending, threshold, offset, test, write, color, alpha) = match &d {
+        Some(d) => (
+            d.blending,
+            d.alpha_threshold,
+            d.depth_offset,
+            d.depth_test,
+            d.depth_write,
+            d.color_write,
+            d.alpha_write,
+        ),
+        None => (
+            CompositingMode::REPLACE,
+            0.0,
+            [0.0; 2],
+            true,
+            true,
+            true,
+            true,
+        ),
+    };
+    use BlendFactor::*;
+    s.blend = match blending {
+        CompositingMode::ALPHA => Some(Blend::func(SrcAlpha, OneMinusSrcAlpha)),
+        CompositingMode::ALPHA_ADD => Some(Blend::func(SrcAlpha, One)),
+        CompositingMode::MODULATE => Some(Blend::func(DstColor, Zero)),
+        CompositingMode::MODULATE_X2 => Some(Blend::func(DstColor, SrcColor)),
+        _ => None,
+    };
+    if threshold > 0.0 {
+        s.alpha_test = Some(AlphaTest {
+            func: CompareFunc::GreaterEqual,
+            reference: threshold,
+        });
+    }
+    s.color_mask = [color, color, color, alpha];
+    if depth {
+        // M3G writes depth even with the test off: emulate with ALWAYS.
+        s.depth_test = match (test, write) {
+            (true, _) => Some(CompareFunc::LessEqual),
+            (false, true) => Some(CompareFunc::Always),
+            (false, false) => None,
+        };
+        s.depth_write = write;
+        if offset != [0.0, 0.0] {
+            s.polygon_offset = Some(crate::core::state::PolygonOffset {
+                factor: offset[0],
+                units: offset[1],
+                clamp: 0.0,
+            });
+        }
+    } else {
+        s.depth_test = None;
+        s.depth_write = false;
+    }
+}
+
+pub(crate) fn apply_polygon_mode(s: &mut RenderState, pm: Option<&PolygonMode>) {
+    let (culling, winding, shading) = match pm {
+        Some(p) => {
+            let d = p.d();
+            (d.culling, d.winding, d.shading)
+        }
+        None => (
+            PolygonMode::CULL_BACK,
+            PolygonMode::WINDING_CCW,
+            PolygonMode::SHADE_SMOOTH,
+        ),
+    };
+    s.cull = match culling {
+        PolygonMode::CULL_BACK => Some(CullFace::Back),
+        PolygonMode::CULL_FRONT => Some(CullFace::Front),
+        _ => None,
+    };
+    s.front_face = if winding == PolygonMode::WINDING_CW {
+        Winding::Cw
+    } else {
+        Winding::Ccw
+    };
+    s.shade_model = if shading == PolygonMode::SHADE_FLAT {
+        ShadeModel::Flat
+    } else {
+        ShadeModel::Smooth
+    };
+}
+
+/// The core's fog for an M3G Fog: LINEAR from `near` to `far`, or EXPONENTIAL with the
+/// density; the distance is |z_eye| (M3G allows that approximation), per pixel.
+pub(crate) fn core_fog(f: &FogData) -> texenv::Fog {
+    let [r, g, b, _] = argb_to_rgba(f.color);
+    texenv::Fog {
+        mode: if f.mode == Fog::LINEAR {
+            FogMode::Linear
+        } else {
+            FogMode::Exp
+        },
+        density: f.density,
+        start: f.near,
+        end: f.far,
+        color: [r, g, b, 1.0],
+        quality: Quality::Balanced,
+    }
+}
+
+/// The core material for an M3G Material whose lit alpha is the diffuse alpha times
+/// `alpha` (without vertex color tracking; with it the tracked vertex alpha carries the
+/// factor instead).
+pub(crate) fn core_material(m: &MaterialData, alpha: f32) -> CoreMaterial {
+    let opaque = |c: u32| rgba_of(c).truncate().extend(1.0);
+    let mut diffuse = rgba_of(m.diffuse);
+    if !m.tracking {
+        diffuse.w *= alpha;
+    }
+    CoreMaterial {
+        ambient: opaque(m.ambient),
+        diffuse,
+        specular: opaque(m.specular),
+        emission: opaque(m.emissive),
+        shininess: m.shininess,
+    }
+}
+
+/// The core's environment for a Texture2D blending function and blend color (the M3G
+/// table of §2.8 is GL's REPLACE, MODULATE, DECAL, BLEND and ADD).
+pub(crate) fn tex_env(t: &TextureData) -> TexEnv {
+    let [r, g, b, _] = argb_to_rgba(t.blend_color);
+    TexEnv {
+        mode: match t.blending {
+            Texture2D::FUNC_REPLACE => EnvMode::Replace,
+            Texture2D::FUNC_DECAL => EnvMode::Decal,
+            Texture2D::FUNC_BLEND => EnvMode::Blend,
+            Texture2D::FUNC_ADD => EnvMode::Add,
+            _ => EnvMode::Modulate,
+        },
+        color: [r, g, b, 1.0],
     }
 }

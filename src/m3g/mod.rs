@@ -174,20 +174,22 @@
 //!
 //! [`Loader`] reads .m3g and PNG files ([`loader`]); [`writer`] saves any object graph as a
 //! .m3g file the Loader reads back.
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 mod animation;
 mod appearance;
+mod camera;
 mod deform;
 mod error;
 mod graphics3d;
 mod image;
 mod keyframe;
+mod light;
 pub mod loader;
 mod mesh;
 mod morphing_mesh;
 mod node;
-mod nodes;
 mod object;
 mod pick;
 mod skinned_mesh;
@@ -200,15 +202,16 @@ pub use appearance::{
     Appearance, Background, CompositingMode, Fog, Material, PolygonMode, Texture2D,
     MAX_TEXTURE_DIMENSION,
 };
+pub use camera::Camera;
 pub use error::{M3gError, Result};
 pub use graphics3d::{Graphics3D, Property, RenderStats, MAX_LIGHTS, MAX_VIEWPORT_DIMENSION};
 pub use image::Image2D;
 pub use keyframe::KeyframeSequence;
+pub use light::Light;
 pub use loader::{LoadError, Loader};
 pub use mesh::{Mesh, Sprite3D, MAX_SPRITE_CROP_DIMENSION};
 pub use morphing_mesh::MorphingMesh;
 pub use node::{Group, GroupExt, Node, NodeExt, World};
-pub use nodes::{Camera, Light};
 pub use object::{Handle, Object3D, Object3DExt, TransformableExt};
 pub use pick::RayIntersection;
 pub use skinned_mesh::{SkinnedMesh, MAX_TRANSFORMS_PER_VERTEX};

@@ -5,8 +5,8 @@ use std::rc::Rc;
 use glam::{Mat4, Quat, Vec3, Vec4};
 
 use super::appearance::Background;
+use super::camera::Camera;
 use super::error::{iae, ioobe, ise, Result};
-use super::nodes::Camera;
 use super::object::{class_data, handle, tf, Handle, Inner, Kind, ObjRef, WeakRef};
 use super::pick::{self, RayIntersection};
 use super::transform::{invert, Transform};

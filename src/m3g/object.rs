@@ -12,11 +12,12 @@ use super::appearance::{
     AppearanceData, BackgroundData, CompositingModeData, FogData, MaterialData, PolygonModeData,
     TextureData,
 };
+use super::camera::CameraData;
 use super::error::{iae, ioobe, Result};
 use super::image::ImageData;
+use super::light::LightData;
 use super::mesh::{MeshData, SpriteData};
 use super::node::{GroupData, NodeData, WorldData};
-use super::nodes::{CameraData, LightData};
 use super::transform::{quaternion, rotation, Transform};
 use super::vertex::{IndexData, VertexArrayData, VertexBufferData};
 
@@ -452,7 +453,7 @@ fn duplicate_raw(r: &ObjRef) -> ObjRef {
         if let Kind::World(w) = &mut i.kind {
             if let Some(c) = &w.camera {
                 if let Some(n) = map.get(&ptr(&c.0)) {
-                    w.camera = Some(super::nodes::Camera(n.clone()));
+                    w.camera = Some(super::camera::Camera(n.clone()));
                 }
             }
         }

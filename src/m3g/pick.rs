@@ -3,12 +3,12 @@
 use glam::{Mat4, Vec3, Vec4};
 
 use super::appearance::PolygonMode;
+use super::camera::Camera;
 use super::error::ioobe;
 use super::error::{iae, ise, Result};
 use super::graphics3d::sprite_rect;
 use super::mesh::{Mesh, Sprite3D};
 use super::node::{local, node_data, transform_between, Node};
-use super::nodes::Camera;
 use super::object::{tf, Handle, ObjRef};
 use super::transform::invert;
 use super::vertex::NUM_TEXTURE_UNITS;

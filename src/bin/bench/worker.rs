@@ -610,7 +610,7 @@ pub fn run_m3g(file: &Path, image_ms: i32) -> Result<(), String> {
         .ok_or("no World in the file")?;
     say(&format!(
         "renderer GLES_CM m3g ({} threads)",
-        GLES_CM::core::bin::thread_count()
+        GLES_CM::core::pool::thread_count()
     ));
     struct M3g {
         world: World,
@@ -733,7 +733,7 @@ pub fn run_m3g_corpus(dir: &Path) -> Result<(), String> {
     }
     say(&format!(
         "renderer GLES_CM m3g ({} threads)",
-        GLES_CM::core::bin::thread_count()
+        GLES_CM::core::pool::thread_count()
     ));
     struct Corpus {
         worlds: Vec<World>,

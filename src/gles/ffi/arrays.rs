@@ -7,19 +7,19 @@ use crate::gles::context::Context;
 use crate::gles::tokens::*;
 use crate::gles::types::*;
 
-use super::{client_bytes, read_slice, with_context, write_values};
+use super::{client_bytes, client_ptr, read_slice, with_context, write_values};
 
 #[no_mangle]
 pub extern "C" fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
     with_context("glVertexPointer", (), |c| {
-        c.array_pointer(ArrayKind::Vertex, size, ty, stride, ptr as usize)
+        c.array_pointer(ArrayKind::Vertex, size, ty, stride, client_ptr(ptr))
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
     with_context("glColorPointer", (), |c| {
-        c.array_pointer(ArrayKind::Color, size, ty, stride, ptr as usize)
+        c.array_pointer(ArrayKind::Color, size, ty, stride, client_ptr(ptr))
     })
 }
 

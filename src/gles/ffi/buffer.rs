@@ -147,3 +147,25 @@ pub extern "C" fn glFlushMappedBufferRangeEXT(
         c.flush_mapped_buffer_range(target, offset, length)
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::gles::buffer::lock_objects;
+    use crate::gles::context::Context;
+    use crate::gles::tokens::*;
+    use crate::gles::tokens_ext::*;
+
+    #[test]
+    fn a_write_through_the_mapping_reaches_the_store() {
+        let mut c = Context::new(None);
+        let b = c.gen_buffers(1)[0];
+        c.bind_buffer(GL_ARRAY_BUFFER, b);
+        c.buffer_data(GL_ARRAY_BUFFER, 4, Some(&[1, 2, 7, 8]), GL_DYNAMIC_DRAW);
+        let p = c.map_buffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY_OES).unwrap();
+        // SAFETY: the store is 4 bytes and stays put while mapped.
+        unsafe { *p = 5 };
+        assert!(c.unmap_buffer(GL_ARRAY_BUFFER));
+        let o = lock_objects(&c.shared);
+        assert_eq!(o.buffers.named(b).unwrap().data(), &[5, 2, 7, 8]);
+    }
+}

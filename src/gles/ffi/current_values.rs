@@ -5,7 +5,7 @@ use crate::core::fixed::to_f32 as fx;
 use crate::gles::arrays::ArrayKind;
 use crate::gles::types::*;
 
-use super::with_context;
+use super::{client_ptr, with_context};
 
 #[no_mangle]
 pub extern "C" fn glNormal3f(nx: GLfloat, ny: GLfloat, nz: GLfloat) {
@@ -58,21 +58,21 @@ pub extern "C" fn glClientActiveTexture(texture: GLenum) {
 #[no_mangle]
 pub extern "C" fn glNormalPointer(ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
     with_context("glNormalPointer", (), |c| {
-        c.array_pointer(ArrayKind::Normal, 3, ty, stride, ptr as usize)
+        c.array_pointer(ArrayKind::Normal, 3, ty, stride, client_ptr(ptr))
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glTexCoordPointer(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
     with_context("glTexCoordPointer", (), |c| {
-        c.array_pointer(ArrayKind::TexCoord, size, ty, stride, ptr as usize)
+        c.array_pointer(ArrayKind::TexCoord, size, ty, stride, client_ptr(ptr))
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glPointSizePointerOES(ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
     with_context("glPointSizePointerOES", (), |c| {
-        c.array_pointer(ArrayKind::PointSize, 1, ty, stride, ptr as usize)
+        c.array_pointer(ArrayKind::PointSize, 1, ty, stride, client_ptr(ptr))
     })
 }
 

@@ -20,8 +20,8 @@ pub unsafe extern "C" fn glGenFramebuffersOES(n: GLsizei, framebuffers: *mut GLu
 /// A non-null `framebuffers` must point to `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteFramebuffersOES(n: GLsizei, framebuffers: *const GLuint) {
-    // SAFETY: the application passes `n` names.
     with_context("glDeleteFramebuffersOES", (), |c| {
+        // SAFETY: the application passes `n` names.
         c.delete_framebuffers(n, unsafe { names(n, framebuffers) })
     })
 }
@@ -55,8 +55,8 @@ pub unsafe extern "C" fn glGenRenderbuffersOES(n: GLsizei, renderbuffers: *mut G
 /// A non-null `renderbuffers` must point to `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteRenderbuffersOES(n: GLsizei, renderbuffers: *const GLuint) {
-    // SAFETY: the application passes `n` names.
     with_context("glDeleteRenderbuffersOES", (), |c| {
+        // SAFETY: the application passes `n` names.
         c.delete_renderbuffers(n, unsafe { names(n, renderbuffers) })
     })
 }

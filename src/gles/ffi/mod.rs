@@ -93,6 +93,71 @@ pub(crate) unsafe fn client_bytes<'a>(ptr: usize, len: usize) -> &'a [u8] {
     unsafe { std::slice::from_raw_parts(ptr as *const u8, len) }
 }
 
+/// What a program passed to a `gl*Pointer` call: the number `glGetPointerv` gives back, and
+/// when no buffer object was bound, the address of client memory that draw calls read long
+/// after the call returned. Only [`ClientPtr::new`] (`unsafe`, called by the shims here) makes
+/// one that can be read, so the safe modules store and read client arrays without handling
+/// an address themselves.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ClientPtr {
+    addr: usize,
+    /// False for a value that is not an address the program vouched for (a buffer offset).
+    readable: bool,
+}
+
+impl ClientPtr {
+    /// The pointer as a `gl*Pointer` shim receives it.
+    ///
+    /// # Safety
+    /// When the array is specified with no buffer object bound to `GL_ARRAY_BUFFER`, the
+    /// program must keep every byte a later draw call reads through `ptr` readable, and not
+    /// write it during that call, for as long as the array is in use: the contract GL sets
+    /// for client arrays (ES 1.1 §2.8). With a buffer object bound, `ptr` is an offset and
+    /// the crate never reads it as an address (`Context::array_pointer` keeps it as
+    /// [`ClientPtr::offset`]).
+    pub unsafe fn new(ptr: *const c_void) -> ClientPtr {
+        ClientPtr {
+            addr: ptr as usize,
+            readable: true,
+        }
+    }
+
+    /// A value that is never read as memory: an offset into a buffer object.
+    pub const fn offset(offset: usize) -> ClientPtr {
+        ClientPtr {
+            addr: offset,
+            readable: false,
+        }
+    }
+
+    /// The value as given (what `glGetPointerv` returns; the offset into a buffer object).
+    pub fn addr(self) -> usize {
+        self.addr
+    }
+
+    /// The `len` bytes of client memory at the pointer, or `None` for a null pointer, an
+    /// offset, or an extent beyond the address space.
+    pub fn bytes<'a>(self, len: usize) -> Option<&'a [u8]> {
+        if !self.readable || self.addr == 0 {
+            return None;
+        }
+        if self.addr.checked_add(len).is_none() || len > isize::MAX as usize {
+            return None;
+        }
+        // SAFETY: the pointer came from `new`, whose caller passed on the program's promise
+        // that the bytes a draw reads stay readable while the array is in use.
+        Some(unsafe { client_bytes(self.addr, len) })
+    }
+}
+
+/// The pointer a `gl*Pointer` shim received, for [`Context::array_pointer`]. Only those
+/// shims call this.
+fn client_ptr(ptr: *const c_void) -> ClientPtr {
+    // SAFETY: `ptr` is a `gl*Pointer` argument, given under GL's client-array contract,
+    // which is `ClientPtr::new`'s.
+    unsafe { ClientPtr::new(ptr) }
+}
+
 /// Reads `N` values from a C array argument, or `None` for a null pointer.
 ///
 /// # Safety

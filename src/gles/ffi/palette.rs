@@ -3,7 +3,7 @@
 use crate::gles::arrays::ArrayKind;
 use crate::gles::types::*;
 
-use super::with_context;
+use super::{client_ptr, with_context};
 
 #[no_mangle]
 pub extern "C" fn glCurrentPaletteMatrixOES(index: GLuint) {
@@ -27,14 +27,14 @@ pub extern "C" fn glMatrixIndexPointerOES(
     ptr: *const GLvoid,
 ) {
     with_context("glMatrixIndexPointerOES", (), |c| {
-        c.array_pointer(ArrayKind::MatrixIndex, size, ty, stride, ptr as usize)
+        c.array_pointer(ArrayKind::MatrixIndex, size, ty, stride, client_ptr(ptr))
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glWeightPointerOES(size: GLint, ty: GLenum, stride: GLsizei, ptr: *const GLvoid) {
     with_context("glWeightPointerOES", (), |c| {
-        c.array_pointer(ArrayKind::Weight, size, ty, stride, ptr as usize)
+        c.array_pointer(ArrayKind::Weight, size, ty, stride, client_ptr(ptr))
     })
 }
 

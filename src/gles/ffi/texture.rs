@@ -34,8 +34,8 @@ pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
 /// A non-null `textures` must point to `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
-    // SAFETY: the application passes `n` names.
     with_context("glDeleteTextures", (), |c| {
+        // SAFETY: the application passes `n` names.
         c.delete_textures(n, unsafe { names(n, textures) })
     })
 }

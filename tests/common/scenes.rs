@@ -1,5 +1,6 @@
-//! Scenes shared by the accuracy report (`src/bin/accuracy.rs`) and the invariance tests
-//! (`tests/invariance.rs`, which includes this file by path): owned vertex data from which
+//! Scenes shared by the invariance tests (`tests/invariance.rs`) and the accuracy report
+//! (`src/bin/accuracy.rs`), both including this file by path, so the scenes a test checks
+//! are the ones the report measures: owned vertex data from which
 //! `DrawCall`s are made, the states that draw them, and an f64 lighting of the lit scene
 //! for the reference renderer (which takes colors as given and does no lighting itself).
 

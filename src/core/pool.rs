@@ -1,0 +1,68 @@
+//! The library's worker threads: how many ([`thread_count`]), the persistent pools that
+//! hold them ([`pool`]), and running one job on the caller and the workers at once
+//! ([`together`]). Flushing a [`super::Frame`] and setting up the pieces of a long draw
+//! ([`super::record_into`]) use them; neither lets the pixels depend on how many there are.
+
+use std::sync::{Arc, Mutex, OnceLock};
+
+/// The worker thread count: `GLES_CM_THREADS` if set to a positive number, otherwise every
+/// available core.
+pub fn thread_count() -> usize {
+    static COUNT: OnceLock<usize> = OnceLock::new();
+    *COUNT.get_or_init(|| {
+        std::env::var("GLES_CM_THREADS")
+            .ok()
+            .and_then(|v| v.trim().parse::<usize>().ok())
+            .filter(|&n| n > 0)
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+    })
+}
+
+/// Runs `work` on the calling thread and on `threads − 1` persistent workers at once, and
+/// returns when every copy has returned. The caller starts at once rather than handing the
+/// whole job to the pool and sleeping: on a machine where waking a worker takes
+/// milliseconds, a late worker then finds the work taken and costs nothing, where before
+/// the job could not even begin until one woke. Callers share the work through a queue, so
+/// who does which part never changes the result.
+pub fn together(threads: usize, work: impl Fn() + Sync) {
+    match (threads > 1).then(|| pool(threads - 1)).flatten() {
+        Some(p) => p.in_place_scope(|s| {
+            for _ in 1..threads {
+                s.spawn(|_| work());
+            }
+            work();
+        }),
+        None => work(),
+    }
+}
+
+/// The persistent workers for `threads` threads (built on first use per count and kept, so
+/// a flush costs no thread start and workers keep their scratch memory), or `None` when
+/// threads cannot be started, and the caller runs alone.
+///
+/// The pools belong to the process that built them: a child made by `fork()` has none of
+/// its parent's threads, so waiting on them would hang it. It builds its own.
+pub fn pool(threads: usize) -> Option<Arc<rayon::ThreadPool>> {
+    type Pools = Vec<(usize, Arc<rayon::ThreadPool>)>;
+    /// The process the pools belong to, its pools, and those inherited from a parent:
+    /// kept, never dropped (that would signal threads that are not here), never used.
+    static POOLS: Mutex<(u32, Pools, Pools)> = Mutex::new((0, Vec::new(), Vec::new()));
+    let mut guard = POOLS.lock().unwrap_or_else(|e| e.into_inner());
+    let (owner, pools, inherited) = &mut *guard;
+    let me = std::process::id();
+    if *owner != me {
+        inherited.append(pools);
+        *owner = me;
+    }
+    if let Some((_, p)) = pools.iter().find(|(n, _)| *n == threads) {
+        return Some(p.clone());
+    }
+    let p = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .thread_name(|i| format!("gles-cm-{i}"))
+        .build()
+        .ok()
+        .map(Arc::new)?;
+    pools.push((threads, p.clone()));
+    Some(p)
+}
