@@ -599,8 +599,10 @@ fn main() -> ExitCode {
          the largest difference of any channel in 8-bit steps, `mean` the mean absolute \
          difference per channel, `PSNR` over all channels, `>1 %` the share of pixels with \
          some channel off by more than one step. The hint is \
-         `GL_PERSPECTIVE_CORRECTION_HINT` (and the line and point smooth hints): FASTEST \
-         divides by w every 8 pixels, NICEST per pixel. Mesa softpipe renders the \
+         `GL_PERSPECTIVE_CORRECTION_HINT` (and the line and point smooth hints): colors are \
+         divided by w per pixel under every hint; FASTEST computes a texture's level of \
+         detail exactly every 8 pixels and reads a blended narrow destination through a \
+         reciprocal. Mesa softpipe renders the \
          benchmark's scenes through its GL ES 1.1 API (the benchmark's child process code, \
          `GALLIUM_DRIVER=softpipe`) and is compared with the same reference image; the \
          other scenes are not driven through Mesa. The lit scene's reference is given \
@@ -674,9 +676,7 @@ fn main() -> ExitCode {
              the unsnapped reference; softpipe's setup evaluates unsnapped float edges like \
              the reference does. It is the documented subpixel precision, not an \
              interpolation error: the mean error and the share of pixels off stay near 0. \
-             Under FASTEST the share off by more than one step grows further from the \
-             documented shortcut of dividing by w only every 8 pixels (softpipe ignores the \
-             hint and divides per pixel).\n",
+             Colors are divided by w per pixel under every hint, as softpipe does.\n",
         );
     }
 

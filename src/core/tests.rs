@@ -1041,7 +1041,7 @@ fn four_quarter_viewports_render_what_the_whole_viewport_does() {
 }
 
 #[test]
-fn perspective_hints_trade_error_for_speed_as_documented() {
+fn perspective_hints_divide_colors_exactly() {
     use crate::core::state::Quality;
     let mut rng = Lcg(11);
     let mut pos = Vec::new();
@@ -1079,13 +1079,13 @@ fn perspective_hints_trade_error_for_speed_as_documented() {
         render(&s, &call, &mut fast).unwrap();
         errors.push(reference::compare(&fast, &slow));
     }
-    // Exact divides: one step of rounding at most, off edges. Every 8th pixel: the
-    // linear error between divides is bounded by the curvature of 1/w over 8 pixels.
-    assert!(errors[1].mean < 0.1 && errors[2] == errors[1], "{errors:?}");
-    assert!(errors[0].mean < 1.0 && errors[0].psnr > 40.0, "{errors:?}");
+    // Exact divides under every hint (FASTEST's stepped divide measured slower on the
+    // 8-wide routes; see `fragment::PERSPECTIVE_STEP`): one step of rounding at most, off
+    // edges, and the same image whatever the hint.
+    assert!(errors[1].mean < 0.1, "{errors:?}");
     assert!(
-        errors[0].mean > errors[1].mean,
-        "the shortcut is taken: {errors:?}"
+        errors[0] == errors[1] && errors[2] == errors[1],
+        "{errors:?}"
     );
     eprintln!("receding triangles, FASTEST / DONT_CARE / NICEST: {errors:?}");
 }
