@@ -142,8 +142,8 @@ fn colors(interp: &SpanInterp, i0: usize) -> Channels {
 
 /// The encoded words of an unblended smooth group, interpolated and encoded in one pass
 /// (no per-channel arrays in memory between the steps: storing them piecewise and
-/// reloading them whole stalls store forwarding). `None` for the stepped divide and for
-/// formats narrower than 8 bits, which take the general steps.
+/// reloading them whole stalls store forwarding). `None` for formats narrower than 8
+/// bits, which take the general steps.
 #[inline(always)]
 fn smooth_words(interp: &SpanInterp, i0: usize, format: ColorFormat) -> Option<Lane<u32>> {
     let alpha = match format {
