@@ -85,10 +85,15 @@ impl Context {
                 ((cy - b.y0 as f64) / vh * 2.0 - 1.0) as f32,
             ]
         };
+        // A plain loop: the nested `flat_map` it replaces compiled (after the frame
+        // binding moved into the core) to code memcheck reports as branching on
+        // uninitialised iterator state.
         let bytes = |v: &[[f32; 2]]| -> Vec<u8> {
-            v.iter()
-                .flat_map(|p| p.iter().flat_map(|c| c.to_ne_bytes()))
-                .collect()
+            let mut out = Vec::with_capacity(v.len() * 8);
+            for c in v.iter().flatten() {
+                out.extend_from_slice(&c.to_ne_bytes());
+            }
+            out
         };
         let position = bytes(&corners.map(ndc));
         let mut tex: [Vec<u8>; MAX_TEXTURE_UNITS] = Default::default();
