@@ -134,7 +134,7 @@ fn filter_of(sm: &Sampler) -> u8 {
 /// steps per pixel in x (and per row in y, for the level of detail). Affine spans (q/w the
 /// same everywhere) are divided once, here.
 #[derive(Clone, Copy, Debug, Default)]
-struct TexSpan {
+struct UnitCoords {
     s0: f32,
     t0: f32,
     q0: f32,
@@ -153,14 +153,14 @@ struct TexSpan {
     ry: f32,
 }
 
-impl TexSpan {
+impl UnitCoords {
     #[inline]
-    fn new(p: &TexPlanes, px: i32, py: i32, (w, h): (u32, u32), cube: bool) -> TexSpan {
+    fn new(p: &TexPlanes, px: i32, py: i32, (w, h): (u32, u32), cube: bool) -> UnitCoords {
         let q0 = p.q.at(px, py);
         // Cube maps ignore q (it only scales the direction), so nothing is divided.
         let affine = !cube && p.q.dx == 0.0 && p.q.dy == 0.0 && q0 != 0.0;
         let k = if affine { 1.0 / q0 } else { 1.0 };
-        TexSpan {
+        UnitCoords {
             s0: (p.s.at(px, py) * k) as f32,
             t0: (p.t.at(px, py) * k) as f32,
             q0: (q0 * k) as f32,
@@ -252,7 +252,7 @@ pub(crate) fn cube_lookup(s: f32, t: f32, r: f32) -> (usize, f32, f32) {
     (f, u, v)
 }
 
-impl TexSpan {
+impl UnitCoords {
     /// (s, t) at pixel `i` of the span.
     #[inline(always)]
     fn st(&self, i: usize) -> (f32, f32) {
@@ -325,9 +325,9 @@ impl TexSpan {
 }
 
 /// Texturing and fog along one span.
-struct SpanTex<'a> {
+struct SpanTexturing<'a> {
     stage: &'a TexStage,
-    spans: [TexSpan; TEXTURE_UNITS],
+    spans: [UnitCoords; TEXTURE_UNITS],
     /// Per unit, when λ is not computed per pixel: the first pixel of the run of
     /// [`PERSPECTIVE_STEP`] pixels set up last, λ there and its linear step per pixel (from
     /// the exact λ at both ends of the run).
@@ -339,20 +339,20 @@ struct SpanTex<'a> {
     d_inv_w: f32,
 }
 
-impl<'a> SpanTex<'a> {
+impl<'a> SpanTexturing<'a> {
     // Inlined so that the caller builds it in place: returned, it is a copy of several
     // hundred bytes per span.
     #[inline(always)]
-    fn new(stage: &'a TexStage, t: &Shading, span: Span) -> SpanTex<'a> {
+    fn new(stage: &'a TexStage, t: &Shading, span: Span) -> SpanTexturing<'a> {
         let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
-        let mut spans = [TexSpan::default(); TEXTURE_UNITS];
+        let mut spans = [UnitCoords::default(); TEXTURE_UNITS];
         if let Some(planes) = t.tex.as_deref() {
             for (n, (u, unit)) in stage.units.iter().enumerate() {
                 let cube = unit.sampler.cube.is_some();
-                spans[n] = TexSpan::new(&planes[*u], px, py, unit.sampler.size(), cube);
+                spans[n] = UnitCoords::new(&planes[*u], px, py, unit.sampler.size(), cube);
             }
         }
-        SpanTex {
+        SpanTexturing {
             stage,
             spans,
             lambda: [(usize::MAX, 0.0, 0.0); TEXTURE_UNITS],
@@ -421,7 +421,7 @@ impl<'a> SpanTex<'a> {
         c
     }
 
-    /// [`SpanTex::apply`] when an environment reads other units: every texel first.
+    /// [`SpanTexturing::apply`] when an environment reads other units: every texel first.
     #[inline(never)]
     fn apply_crossbar(&mut self, i: usize, primary: [f32; 4]) -> [f32; 4] {
         let stage = self.stage;
@@ -722,7 +722,10 @@ fn general<'a>(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'a>)
     } else {
         SpanInterp::new(t, span)
     };
-    let mut tex = k.tex.as_deref().map(|stage| SpanTex::new(stage, t, span));
+    let mut tex = k
+        .tex
+        .as_deref()
+        .map(|stage| SpanTexturing::new(stage, t, span));
     let row = (span.y - band.y0) as usize * band.width;
     for (i, x) in (span.x0..span.x1).enumerate() {
         let at = row + x as usize;
@@ -747,7 +750,7 @@ fn general<'a>(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'a>)
         if let Some(s) = k.sample {
             // §4.1.3 comes before the alpha test: a fragment whose alpha leaves this
             // plane's sample out of the mask stops here, and alpha to one feeds the rest.
-            if s.alpha_min.is_some_and(|min| unorm8(src[3]) < min) {
+            if s.alpha_min.is_some_and(|min| alpha_byte(src[3]) < min) {
                 continue;
             }
             if s.alpha_to_one {
@@ -757,7 +760,7 @@ fn general<'a>(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'a>)
         if let Some(a) = k.alpha {
             // Both sides at 8-bit precision, so a reference equal to a vertex alpha compares
             // equal however the alpha was interpolated.
-            if !a.func.test(unorm8(src[3]), unorm8(a.reference)) {
+            if !a.func.test(alpha_byte(src[3]), alpha_byte(a.reference)) {
                 continue;
             }
         }
@@ -809,7 +812,8 @@ fn general<'a>(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'a>)
     }
 }
 
-fn unorm8(c: f32) -> u8 {
+/// An alpha value as the 8-bit number the alpha test and `alpha_min` compare.
+fn alpha_byte(c: f32) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 

@@ -156,10 +156,10 @@ fn smooth_words(interp: &SpanInterp, i0: usize, format: ColorFormat) -> Option<L
     let (c0, dc) = (interp.c0, interp.dc);
     let (w0, dw) = (interp.inv_w0, interp.d_inv_w);
     let word = |c: [f32; 4]| {
-        unorm8(c[0])
-            | unorm8(c[1]) << 8
-            | unorm8(c[2]) << 16
-            | (unorm8(c[3]) & alpha_mask) << 24
+        channel_byte(c[0])
+            | channel_byte(c[1]) << 8
+            | channel_byte(c[2]) << 16
+            | (channel_byte(c[3]) & alpha_mask) << 24
             | alpha
     };
     match interp.divide {
@@ -234,9 +234,10 @@ fn decode_channel<const N: u32>(w: &Lane<u32>, shift: u32, fast: bool) -> Lane<f
     std::array::from_fn(|j| (((w[j] >> shift) & 0xFF) >> (8 - N)) as i32 as f32 / max)
 }
 
-/// `unorm(c, 8)` written so it vectorizes (`max` maps NaN to 0 as `unorm` does).
+/// A channel's 8-bit value, `unorm(c, 8)`, as a word to shift into place; written so it
+/// vectorizes (`max` maps NaN to 0 as `unorm` does).
 #[inline(always)]
-fn unorm8(c: f32) -> u32 {
+fn channel_byte(c: f32) -> u32 {
     floor_i32(unit_or_zero(c) * 255.0 + 0.5).0 as u32
 }
 
@@ -248,15 +249,18 @@ fn encode_lanes(format: ColorFormat, c: &Channels, thresholds: Option<&Lane<f32>
     match format {
         ColorFormat::Rgba8888 => {
             for (j, o) in out.iter_mut().enumerate() {
-                *o = unorm8(c[0][j])
-                    | unorm8(c[1][j]) << 8
-                    | unorm8(c[2][j]) << 16
-                    | unorm8(c[3][j]) << 24;
+                *o = channel_byte(c[0][j])
+                    | channel_byte(c[1][j]) << 8
+                    | channel_byte(c[2][j]) << 16
+                    | channel_byte(c[3][j]) << 24;
             }
         }
         ColorFormat::Rgb888 => {
             for (j, o) in out.iter_mut().enumerate() {
-                *o = unorm8(c[0][j]) | unorm8(c[1][j]) << 8 | unorm8(c[2][j]) << 16 | 0xFF00_0000;
+                *o = channel_byte(c[0][j])
+                    | channel_byte(c[1][j]) << 8
+                    | channel_byte(c[2][j]) << 16
+                    | 0xFF00_0000;
             }
         }
         ColorFormat::Rgb565 => out = encode_narrow::<5, 6, 5, 0>(c, thresholds),
@@ -770,10 +774,10 @@ fn floor_i32(u: f32) -> (i32, f32) {
     )
 }
 
-/// Texture coordinates (s, t) of the group at `i0`, as `TexSpan::st` gives them, and the
+/// Texture coordinates (s, t) of the group at `i0`, as `UnitCoords::st` gives them, and the
 /// reciprocal of q/w they were divided by (1 on affine spans, where nothing is divided).
 #[inline(always)]
-fn st_lanes(ts: &TexSpan, i0: usize) -> (Lane<f32>, Lane<f32>, Lane<f32>) {
+fn st_lanes(ts: &UnitCoords, i0: usize) -> (Lane<f32>, Lane<f32>, Lane<f32>) {
     let fi0 = i0 as f32;
     let (mut s, mut t, mut r) = ([0.0; LANES], [0.0; LANES], [1.0; LANES]);
     for j in 0..LANES {
@@ -1025,11 +1029,11 @@ fn lerp_lanes(x: &Lane<f32>, y: &Lane<f32>, t: &Lane<f32>) -> Lane<f32> {
     out
 }
 
-/// λ of unit 0 for the group (`SpanTex::lambda_at`): ρ² vectorized when λ is per pixel,
+/// λ of unit 0 for the group (`SpanTexturing::lambda_at`): ρ² vectorized when λ is per pixel,
 /// the logarithm per lane.
 #[inline(always)]
 fn lambda_lanes(
-    tex: &mut SpanTex,
+    tex: &mut SpanTexturing,
     n: usize,
     i0: usize,
     s: &Lane<f32>,
@@ -1052,7 +1056,7 @@ fn lambda_lanes(
     let ts = &tex.spans[n];
     let mut rho2 = [0.0f32; LANES];
     for j in 0..LANES {
-        // TexSpan::lambda, written out (on affine spans r is 1, which changes no bit).
+        // UnitCoords::lambda, written out (on affine spans r is 1, which changes no bit).
         let r = r[j];
         let ux = (ts.ds - s[j] * ts.dq) * r * ts.w;
         let vx = (ts.dt - t[j] * ts.dq) * r * ts.h;
@@ -1078,7 +1082,7 @@ fn lambda_lanes(
 #[allow(clippy::too_many_arguments)]
 fn mipmap_lanes<const TRI: bool>(
     sm: &Sampler,
-    tex: &mut SpanTex,
+    tex: &mut SpanTexturing,
     n: usize,
     i0: usize,
     s: &Lane<f32>,
@@ -1320,9 +1324,9 @@ fn texenv_by_pixel(
     }
 }
 
-/// Fog over a group (`SpanTex::fog`).
+/// Fog over a group (`SpanTexturing::fog`).
 #[inline(always)]
-fn fog_lanes(tex: &SpanTex, f: &Fog, i0: usize, c: &mut Channels) {
+fn fog_lanes(tex: &SpanTexturing, f: &Fog, i0: usize, c: &mut Channels) {
     let fi0 = i0 as f32;
     let mut factor = [0.0f32; LANES];
     for (j, factor) in factor.iter_mut().enumerate() {
@@ -1352,7 +1356,7 @@ fn fog_lanes(tex: &SpanTex, f: &Fog, i0: usize, c: &mut Channels) {
 /// sampled with `filter` (the unit's `F_*` class).
 #[inline(always)]
 fn unit_texels(
-    tex: &mut SpanTex,
+    tex: &mut SpanTexturing,
     len: usize,
     sm: &Sampler,
     filter: u8,
@@ -1381,7 +1385,7 @@ fn unit_texels(
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
 fn texels_by_pixel(
-    tex: &mut SpanTex,
+    tex: &mut SpanTexturing,
     len: usize,
     sm: &Sampler,
     filter: u8,
@@ -1417,7 +1421,7 @@ pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
 ) {
     let stage = k.tex.as_deref().expect("textured routes have a stage");
     let interp = SpanInterp::new(t, span);
-    let mut tex = SpanTex::new(stage, t, span);
+    let mut tex = SpanTexturing::new(stage, t, span);
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
     let thresholds = span_thresholds(k, span);
@@ -1439,7 +1443,7 @@ fn textured_group<const F: u8, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
     interp: &SpanInterp,
-    tex: &mut SpanTex,
+    tex: &mut SpanTexturing,
     i0: usize,
     live: Lane<u32>,
     color: &mut Lane<u32>,
