@@ -28,8 +28,8 @@ use super::texenv::{self, Fog, TextureUnit};
 use super::texture::{MagFilter, MinFilter, Sampler};
 use super::TEXTURE_UNITS;
 
-mod lanes;
-use lanes::{simple, textured};
+mod routines;
+use routines::{simple, textured};
 
 /// Which span routine a key runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

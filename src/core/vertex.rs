@@ -13,7 +13,7 @@ use super::{OutOfMemory, TEXTURE_UNITS};
 pub mod lighting;
 mod transform;
 
-use lighting::{Lanes, LANES};
+use super::lanes::{Lane, LANES};
 
 /// The component types vertex arrays can hold.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -157,7 +157,7 @@ impl AttribArray<'_> {
 
     /// [`AttribSource::gather`] of an array.
     #[inline]
-    pub fn gather<const N: usize>(&self, idx: &[usize; LANES], out: &mut [Lanes; N]) {
+    pub fn gather<const N: usize>(&self, idx: &[usize; LANES], out: &mut [Lane<f32>; N]) {
         (self.gather_fn::<N>())(self, idx, out)
     }
 
@@ -188,7 +188,7 @@ impl AttribArray<'_> {
     }
 }
 
-type GatherFn<const N: usize> = fn(&AttribArray<'_>, &[usize; LANES], &mut [Lanes; N]);
+type GatherFn<const N: usize> = fn(&AttribArray<'_>, &[usize; LANES], &mut [Lane<f32>; N]);
 
 /// The element formats, as const parameters: one monomorphized fetch per format and size,
 /// chosen once per array (per 8 vertices in the batched path) instead of per component.
@@ -251,7 +251,7 @@ fn element<const F: u8, const S: usize>(data: &[u8], stride: usize, i: usize) ->
 fn gather_as<const F: u8, const S: usize, const N: usize>(
     a: &AttribArray<'_>,
     idx: &[usize; LANES],
-    out: &mut [Lanes; N],
+    out: &mut [Lane<f32>; N],
 ) {
     for (k, &i) in idx.iter().enumerate() {
         let v = element::<F, S>(a.data, a.stride, i);
@@ -290,7 +290,7 @@ impl AttribSource<'_> {
     /// once for all lanes, and every format has its own loop, so byte, short and 16.16
     /// arrays cost the batched path no more than float ones.
     #[inline]
-    pub fn gather<const N: usize>(&self, idx: &[usize; LANES], out: &mut [Lanes; N]) {
+    pub fn gather<const N: usize>(&self, idx: &[usize; LANES], out: &mut [Lane<f32>; N]) {
         match self {
             AttribSource::Array(a) => a.gather(idx, out),
             AttribSource::Constant(c) => {

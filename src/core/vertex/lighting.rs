@@ -28,34 +28,8 @@
 
 use glam::{Vec3, Vec4};
 
+use crate::core::lanes::{max_ps, min_ps, Lane, LANES};
 use crate::core::state::{Light, Lighting, Material};
-
-/// How many vertices the batched vertex path runs at once (the lanes of an AVX vector).
-pub const LANES: usize = 8;
-
-/// One value per lane.
-pub type Lanes = [f32; LANES];
-
-/// `a.max(b)` as the vector instruction (and glam's `Vec4::max`) computes it: `b` when
-/// either is NaN or they compare equal.
-#[inline(always)]
-pub fn max_ps(a: f32, b: f32) -> f32 {
-    if a > b {
-        a
-    } else {
-        b
-    }
-}
-
-/// `a.min(b)` as the vector instruction computes it (see [`max_ps`]).
-#[inline(always)]
-pub fn min_ps(a: f32, b: f32) -> f32 {
-    if a < b {
-        a
-    } else {
-        b
-    }
-}
 
 /// A light with what does not depend on the vertex worked out.
 #[derive(Clone, Copy, Debug)]
@@ -183,7 +157,12 @@ impl Prepared {
     /// is exactly 1 and left out, and `max`/`min` where `shade` uses vector ones follow
     /// their NaN rule (the second operand wins).
     #[inline(always)]
-    pub fn shade_lanes(&self, n: &[Lanes; 3], color: &[Lanes; 4], back: bool) -> [Lanes; 4] {
+    pub fn shade_lanes(
+        &self,
+        n: &[Lane<f32>; 3],
+        color: &[Lane<f32>; 4],
+        back: bool,
+    ) -> [Lane<f32>; 4] {
         let f = usize::from(back);
         let face = &self.faces[f];
         let m = &face.material;

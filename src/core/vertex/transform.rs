@@ -5,9 +5,10 @@
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
-use super::lighting::{max_ps, min_ps, Lanes, Prepared, LANES};
+use super::lighting::Prepared;
 use super::{AttribArray, AttribSource, ClipVertex, DrawCall, Indices, Primitive};
 use crate::core::clip::MAX_USER_PLANES;
+use crate::core::lanes::{max_ps, min_ps, Lane, LANES};
 use crate::core::state::{RenderState, ShadeModel, TexGen};
 use crate::core::TEXTURE_UNITS;
 
@@ -390,7 +391,11 @@ impl<'s, 'd> Stage<'s, 'd> {
     /// lit when lighting is on and `light` (see [`lit`](Self::lit)), otherwise the given
     /// colors clamped.
     #[inline(always)]
-    pub fn colors_lanes(&self, idx: &[usize; LANES], light: bool) -> ([Lanes; 4], [Lanes; 4]) {
+    pub fn colors_lanes(
+        &self,
+        idx: &[usize; LANES],
+        light: bool,
+    ) -> ([Lane<f32>; 4], [Lane<f32>; 4]) {
         let mut given = [[0.0; LANES]; 4];
         self.draw.color.gather(idx, &mut given);
         let Some(l) = self.lighting.as_ref().filter(|_| light) else {
@@ -497,7 +502,7 @@ fn palette_terms(draw: &DrawCall<'_>, i: usize) -> impl Iterator<Item = (usize, 
 }
 
 #[inline(always)]
-fn store_lane(v: &mut Vec4, a: &[Lanes; 4], k: usize) {
+fn store_lane(v: &mut Vec4, a: &[Lane<f32>; 4], k: usize) {
     v.x = a[0][k];
     v.y = a[1][k];
     v.z = a[2][k];
@@ -505,13 +510,13 @@ fn store_lane(v: &mut Vec4, a: &[Lanes; 4], k: usize) {
 }
 
 #[inline(always)]
-fn lane4(a: &[Lanes; 4], k: usize) -> Vec4 {
+fn lane4(a: &[Lane<f32>; 4], k: usize) -> Vec4 {
     Vec4::new(a[0][k], a[1][k], a[2][k], a[3][k])
 }
 
 /// `m · p` for each lane, in `Mat4 * Vec4`'s order: ((x·c₀ + y·c₁) + z·c₂) + w·c₃.
 #[inline(always)]
-fn mat4_lanes(m: &Mat4, p: &[Lanes; 4]) -> [Lanes; 4] {
+fn mat4_lanes(m: &Mat4, p: &[Lane<f32>; 4]) -> [Lane<f32>; 4] {
     let m = m.to_cols_array_2d();
     let mut out = [[0.0; LANES]; 4];
     for r in 0..4 {
@@ -526,7 +531,7 @@ fn mat4_lanes(m: &Mat4, p: &[Lanes; 4]) -> [Lanes; 4] {
 /// `Vec3::normalize_or_zero` for each lane, in its order: the reciprocal of the length,
 /// and zero where that is not finite and positive.
 #[inline(always)]
-fn normalize_lanes(v: &mut [Lanes; 3]) {
+fn normalize_lanes(v: &mut [Lane<f32>; 3]) {
     for k in 0..LANES {
         let len = (v[0][k] * v[0][k] + v[1][k] * v[1][k] + v[2][k] * v[2][k]).sqrt();
         let rcp = 1.0 / len;

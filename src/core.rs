@@ -11,6 +11,7 @@ pub mod clip;
 pub mod fixed;
 pub mod fragment;
 pub mod frame;
+pub mod lanes;
 pub mod multisample;
 pub mod pool;
 pub mod raster;

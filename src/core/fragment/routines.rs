@@ -1,8 +1,9 @@
 //! The specialized span routines, run over groups of up to [`LANES`] pixels with one array
-//! per channel. Each step (depth, color interpolation, blending, encoding) is a loop over
-//! the whole group with its state decisions taken once outside it, which the compiler turns
-//! into SIMD; per pixel, the arithmetic is exactly the per-pixel code's (same operations in
-//! the same order, no fused multiply-add), so the images are bit-identical to it.
+//! per channel, in the lane vocabulary of [`crate::core::lanes`] that the vertex stage shares.
+//! Each step (depth, color interpolation, blending, encoding) is a loop over the whole group
+//! with its state decisions taken once outside it, which the compiler turns into SIMD; per
+//! pixel, the arithmetic is exactly the per-pixel code's (same operations in the same order,
+//! no fused multiply-add), so the images are bit-identical to it.
 
 // Lane loops index several arrays in step; that is the shape the vectorizer wants.
 #![allow(clippy::needless_range_loop)]
@@ -10,38 +11,12 @@
 use multiversion::multiversion;
 
 use super::*;
+use crate::core::lanes::{Lane, INDEX_F32, INDEX_F64, LANES};
 use crate::core::texenv::{Combine, CombineFunc, EnvMode, FogMode, Operand, Source, TexEnv};
 use crate::core::texture::{BaseFormat, MagFilter, MinFilter, Wrap};
 
 /// Texels are unpacked to 0 ..= 255 and filtered there, then scaled to 0 ..= 1.
 const INV_255: f32 = 1.0 / 255.0;
-
-/// Pixels per group: one AVX2 vector of f32 (two SSE ones), short enough that short spans
-/// waste little.
-pub(super) const LANES: usize = 8;
-
-type Lane<T> = [T; LANES];
-
-/// Lane indices as floats: `i0 as f32 + J32[j]` is `(i0 + j) as f32` exactly (both are
-/// integers below 2²⁴), without a per-lane integer conversion.
-const J32: Lane<f32> = {
-    let mut a = [0.0; LANES];
-    let mut j = 0;
-    while j < LANES {
-        a[j] = j as f32;
-        j += 1;
-    }
-    a
-};
-const J64: Lane<f64> = {
-    let mut a = [0.0; LANES];
-    let mut j = 0;
-    while j < LANES {
-        a[j] = j as f64;
-        j += 1;
-    }
-    a
-};
 
 /// `v` clamped to [0, 1] with NaN mapped to 0 (`clamp` would keep NaN).
 #[inline(always)]
@@ -87,7 +62,7 @@ fn depth_test(
     let mut z = [0u32; LANES];
     for (j, z) in z.iter_mut().enumerate() {
         // DepthFormat::quantize of SpanInterp::z, written out so it vectorizes (NaN → 0).
-        let v = interp.z0 + interp.dz * (fi0 + J64[j]);
+        let v = interp.z0 + interp.dz * (fi0 + INDEX_F64[j]);
         *z = floor_u32_f64(unit_or_zero_f64(v) * max + 0.5);
     }
     let mut pass = [0u32; LANES];
@@ -128,13 +103,13 @@ fn colors(interp: &SpanInterp, i0: usize) -> Channels {
     let (c0, dc) = (interp.c0, interp.dc);
     match interp.divide {
         Divide::None => {
-            std::array::from_fn(|c| std::array::from_fn(|j| c0[c] + dc[c] * (fi0 + J32[j])))
+            std::array::from_fn(|c| std::array::from_fn(|j| c0[c] + dc[c] * (fi0 + INDEX_F32[j])))
         }
         Divide::Exact => {
             let (w0, dw) = (interp.inv_w0, interp.d_inv_w);
-            let w: Lane<f32> = std::array::from_fn(|j| 1.0 / (w0 + dw * (fi0 + J32[j])));
+            let w: Lane<f32> = std::array::from_fn(|j| 1.0 / (w0 + dw * (fi0 + INDEX_F32[j])));
             std::array::from_fn(|c| {
-                std::array::from_fn(|j| (c0[c] + dc[c] * (fi0 + J32[j])) * w[j])
+                std::array::from_fn(|j| (c0[c] + dc[c] * (fi0 + INDEX_F32[j])) * w[j])
             })
         }
     }
@@ -164,11 +139,11 @@ fn smooth_words(interp: &SpanInterp, i0: usize, format: ColorFormat) -> Option<L
     };
     match interp.divide {
         Divide::None => Some(std::array::from_fn(|j| {
-            let f = fi0 + J32[j];
+            let f = fi0 + INDEX_F32[j];
             word(std::array::from_fn(|c| c0[c] + dc[c] * f))
         })),
         Divide::Exact => Some(std::array::from_fn(|j| {
-            let f = fi0 + J32[j];
+            let f = fi0 + INDEX_F32[j];
             let w = 1.0 / (w0 + dw * f);
             word(std::array::from_fn(|c| (c0[c] + dc[c] * f) * w))
         })),
@@ -781,13 +756,13 @@ fn st_lanes(ts: &UnitCoords, i0: usize) -> (Lane<f32>, Lane<f32>, Lane<f32>) {
     let fi0 = i0 as f32;
     let (mut s, mut t, mut r) = ([0.0; LANES], [0.0; LANES], [1.0; LANES]);
     for j in 0..LANES {
-        let fi = fi0 + J32[j];
+        let fi = fi0 + INDEX_F32[j];
         s[j] = ts.s0 + ts.ds * fi;
         t[j] = ts.t0 + ts.dt * fi;
     }
     if !ts.affine {
         for j in 0..LANES {
-            r[j] = 1.0 / (ts.q0 + ts.dq * (fi0 + J32[j]));
+            r[j] = 1.0 / (ts.q0 + ts.dq * (fi0 + INDEX_F32[j]));
             s[j] *= r[j];
             t[j] *= r[j];
         }
@@ -1330,7 +1305,7 @@ fn fog_lanes(tex: &SpanTexturing, f: &Fog, i0: usize, c: &mut Channels) {
     let fi0 = i0 as f32;
     let mut factor = [0.0f32; LANES];
     for (j, factor) in factor.iter_mut().enumerate() {
-        let fi = fi0 + J32[j];
+        let fi = fi0 + INDEX_F32[j];
         *factor = (tex.fog0 + tex.dfog * fi) / (tex.inv_w0 + tex.d_inv_w * fi);
     }
     let d = f.end - f.start;
