@@ -14,6 +14,7 @@ pub mod frame;
 pub mod lanes;
 pub mod multisample;
 pub mod pool;
+pub mod quality;
 pub mod raster;
 pub mod reference;
 pub mod setup;
@@ -240,7 +241,7 @@ fn set_up(
                 for i in 1..poly.len() - 1 {
                     let tri = [poly[0], poly[i], poly[i + 1]];
                     if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
-                        emit(t);
+                        emit(raster::Prim::Triangle(t));
                     }
                 }
             });

@@ -15,7 +15,7 @@
 
 use glam::Vec4;
 
-use super::vertex::ClipVertex;
+use super::vertex::{rejects, ClipVertex};
 
 /// The smallest w that survives clipping. A vertex at (0, 0, 0, 0) lies inside all six
 /// frustum planes, so this plane is what keeps 1/w finite.
@@ -26,8 +26,7 @@ pub const W_MIN: f32 = 1e-30;
 /// snapped coordinates below 2²⁴ and edge products far below 2⁶³.
 pub const GUARD: f32 = 8.0;
 
-/// `GL_MAX_CLIP_PLANES`: the user clip planes a vertex carries distances for.
-pub const MAX_USER_PLANES: usize = 6;
+pub use super::vertex::MAX_USER_PLANES;
 
 /// Frustum planes (6) and the w plane.
 const FRUSTUM_PLANES: usize = 7;
@@ -129,16 +128,6 @@ const SPREAD: [u16; 16] = {
     t
 };
 
-/// A bit per frustum x or y plane that the vertex is strictly outside of (x < −w,
-/// y < −w, x > w, y > w; negating is exact).
-#[inline]
-fn frustum_code(v: &ClipVertex) -> u32 {
-    let p = v.pos;
-    Vec4::new(-p.x, -p.y, p.x, p.y)
-        .cmpgt(Vec4::splat(p.w))
-        .bitmask()
-}
-
 /// Clips segment (a, b) against the clip volume and the first `user` user planes,
 /// returning what is left, in the original direction.
 pub fn line(a: &ClipVertex, b: &ClipVertex, user: usize) -> Option<(ClipVertex, ClipVertex)> {
@@ -173,23 +162,6 @@ pub fn line(a: &ClipVertex, b: &ClipVertex, user: usize) -> Option<(ClipVertex, 
 /// is outside is not drawn.)
 pub fn point(v: &ClipVertex, user: usize) -> bool {
     v.pos.is_finite() && distances(v)[..plane_count(user)].iter().all(|&d| d >= 0.0)
-}
-
-/// Whether [`triangle`] drops (a, b, c) from the positions alone, before any clipping: the
-/// vertex stage lights no vertex of such a triangle.
-#[inline]
-pub fn rejects(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex) -> bool {
-    // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
-    // than let NaN reach the rasterizer.
-    if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
-        return true;
-    }
-    // Outside one of the frustum's x or y planes with all three vertices, the triangle is
-    // outside it everywhere (the plane's half-space is convex, whatever the signs of w), so
-    // it could only cover pixels beyond the viewport, which the rasterizer never draws.
-    // Most such triangles lie inside the guard band and would otherwise be set up in full
-    // only for their bounding box to come out empty.
-    frustum_code(a) & frustum_code(b) & frustum_code(c) != 0
 }
 
 /// Clips triangle (a, b, c) against the guard band, the near, far and w planes and the first

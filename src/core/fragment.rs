@@ -633,6 +633,7 @@ struct SpanInterp {
 impl SpanInterp {
     #[inline]
     fn new(t: &Shading, span: Span) -> SpanInterp {
+        let depth = SpanInterp::depth_only(t, span);
         let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
         // Written out per channel: `array::map` leaves its closure as a call per span.
         let cw = &t.color_w;
@@ -661,19 +662,17 @@ impl SpanInterp {
             Divide::Exact
         };
         SpanInterp {
-            z0: t.z.at(px, py),
-            dz: t.z.dx,
             inv_w0,
             d_inv_w: t.inv_w.dx as f32,
             c0,
             dc,
             divide,
-            len: (span.x1 - span.x0) as usize,
+            ..depth
         }
     }
 
-    /// [`new`](Self::new) for a routine that reads no interpolated color (flat shading):
-    /// depth only, no color plane evaluated and no 1/w divided per span.
+    /// The span's depth alone, for a routine that reads no interpolated color (flat
+    /// shading): no color plane evaluated and no 1/w divided per span.
     #[inline]
     fn depth_only(t: &Shading, span: Span) -> SpanInterp {
         let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);

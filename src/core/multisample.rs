@@ -29,12 +29,12 @@
 //! alpha to one then sets alpha to 1. Both mappings are fixed, without dithering, so the
 //! results do not depend on position or thread count.
 //!
-//! The resolve ([`resolve_words`]) is the box filter: per channel, the mean of the samples'
-//! n-bit values rounded half up, `(sum + 2) / 4`. It runs after every flush of a frame into a
-//! multisampled target, so `glReadPixels`, `glCopyTex*`, `eglSwapBuffers`, `eglCopyBuffers`
+//! The resolve ([`resolve_words`](super::target::resolve_words), beside the formats it
+//! reads) is the box filter: per channel, the mean of the samples' n-bit values rounded
+//! half up, `(sum + 2) / 4`. It runs after every flush of a frame into a multisampled
+//! target, so `glReadPixels`, `glCopyTex*`, `eglSwapBuffers`, `eglCopyBuffers`
 //! and `eglBindTexImage` all read resolved pixels without knowing about samples.
 
-use super::target::{expand_to_8, ColorFormat};
 use super::SUBPIXEL_BITS;
 
 /// Samples per pixel of a multisampled target.
@@ -123,32 +123,10 @@ impl Multisample {
     }
 }
 
-/// The box-filter resolve of one pixel's sample words (stored RGBA8 words of `format`): per
-/// channel the mean of the n-bit values, rounded half up, widened back to 8 bits.
-pub fn resolve_words(format: ColorFormat, words: &[u32; SAMPLES]) -> u32 {
-    if words.iter().all(|&w| w == words[0]) {
-        return words[0];
-    }
-    let bits = format.bits();
-    let mut out = [255u8; 4];
-    for (c, &n) in bits.iter().enumerate() {
-        if n == 0 {
-            continue;
-        }
-        // A stored n-bit value is its byte's top n bits (see `expand_to_8`).
-        let sum: u32 = words
-            .iter()
-            .map(|w| ((w >> (8 * c)) & 0xFF) >> (8 - n))
-            .sum();
-        let mean = (sum + SAMPLES as u32 / 2) / SAMPLES as u32;
-        out[c] = expand_to_8(mean, n);
-    }
-    u32::from_le_bytes(out)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::target::{expand_to_8, resolve_words, ColorFormat};
 
     #[test]
     fn offsets_are_the_rotated_grid_in_eighths() {

@@ -11,9 +11,7 @@ use super::target::Rect;
 pub use line::Line;
 pub use point::Point;
 
-/// The largest aliased and antialiased line width and point size.
-pub const MAX_LINE_WIDTH: f32 = 64.0;
-pub const MAX_POINT_SIZE: f32 = 64.0;
+pub use super::state::{MAX_LINE_WIDTH, MAX_POINT_SIZE};
 
 /// A run of pixels `x0 <= x < x1` on row `y` that a primitive produces fragments for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -2,7 +2,6 @@
 //! subpixels, integer edge functions with a top-left fill rule, facing and culling.
 
 use super::clip;
-use super::raster::Prim;
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
 use super::target::{DepthFormat, Rect};
 use super::vertex::ClipVertex;
@@ -307,7 +306,7 @@ pub fn triangle(
     provoking: &ClipVertex,
     bounds: Rect,
     depth: Option<DepthFormat>,
-) -> Option<Prim> {
+) -> Option<Triangle> {
     let vp = state.viewport;
     let (hw, hh) = (vp.width as f64 * 0.5, vp.height as f64 * 0.5);
     let (cx, cy) = (vp.x as f64 + hw, vp.y as f64 + hh);
@@ -423,7 +422,7 @@ pub fn triangle(
     } else {
         attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]))
     };
-    Some(Prim::Triangle(Triangle {
+    Some(Triangle {
         edges,
         bbox,
         shading: Shading {
@@ -436,7 +435,7 @@ pub fn triangle(
             tex,
             fog,
         },
-    }))
+    })
 }
 
 #[cfg(test)]

@@ -4,7 +4,12 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
+pub use super::quality::Quality;
 use super::target::{ColorMask, Rect};
+
+/// The largest aliased and antialiased line width and point size.
+pub const MAX_LINE_WIDTH: f32 = 64.0;
+pub const MAX_POINT_SIZE: f32 = 64.0;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CompareFunc {
@@ -213,34 +218,6 @@ impl PolygonOffset {
     }
 }
 
-/// What a hint asks for (ARCHITECTURE decision 4). The GL's `GL_DONT_CARE` maps to one of
-/// these per hint, chosen with the benchmark's figures.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Quality {
-    /// Documented shortcuts: colors and texture coordinates divided by w exactly only
-    /// every [`crate::core::fragment::PERSPECTIVE_STEP`] pixels and interpolated linearly
-    /// in between; 2 × 2 coverage samples for antialiased points and lines. As the
-    /// perspective hint (which governs the fragment stage's precision), also: λ exact every
-    /// `PERSPECTIVE_STEP` pixels and interpolated between, and blending on narrow color formats reads the destination with a reciprocal
-    /// multiply instead of a division (at most 1 ulp off, so within 2 steps of DONT_CARE).
-    Fastest,
-    /// The default: exact perspective, 4 × 4 coverage samples.
-    Balanced,
-    /// Exact perspective, 8 × 8 coverage samples.
-    Nicest,
-}
-
-impl Quality {
-    /// Coverage samples per pixel side for antialiased points and lines.
-    pub fn coverage_samples(self) -> i32 {
-        match self {
-            Quality::Fastest => 2,
-            Quality::Balanced => 4,
-            Quality::Nicest => 8,
-        }
-    }
-}
-
 /// The viewport rectangle in window pixels (width and height already clamped to the maximum).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Viewport {
@@ -370,7 +347,7 @@ impl Default for PointParams {
     fn default() -> PointParams {
         PointParams {
             size_min: 0.0,
-            size_max: super::raster::MAX_POINT_SIZE,
+            size_max: MAX_POINT_SIZE,
             attenuation: [1.0, 0.0, 0.0],
             fade_threshold: 1.0,
         }

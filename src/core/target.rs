@@ -315,7 +315,7 @@ impl Target {
         );
         let words = planes.0.zip(planes.1).zip(planes.2).zip(planes.3);
         for (out, (((&a, &b), &c), &d)) in self.color.iter_mut().zip(words) {
-            *out = multisample::resolve_words(format, &[a, b, c, d]);
+            *out = resolve_words(format, &[a, b, c, d]);
         }
     }
 
@@ -462,6 +462,29 @@ pub fn try_filled<T: Clone>(n: usize, value: T) -> Option<Vec<T>> {
     v.try_reserve_exact(n).ok()?;
     v.resize(n, value);
     Some(v)
+}
+
+/// The box-filter resolve of one pixel's sample words (stored RGBA8 words of `format`): per
+/// channel the mean of the n-bit values, rounded half up, widened back to 8 bits.
+pub fn resolve_words(format: ColorFormat, words: &[u32; multisample::SAMPLES]) -> u32 {
+    if words.iter().all(|&w| w == words[0]) {
+        return words[0];
+    }
+    let bits = format.bits();
+    let mut out = [255u8; 4];
+    for (c, &n) in bits.iter().enumerate() {
+        if n == 0 {
+            continue;
+        }
+        // A stored n-bit value is its byte's top n bits (see `expand_to_8`).
+        let sum: u32 = words
+            .iter()
+            .map(|w| ((w >> (8 * c)) & 0xFF) >> (8 - n))
+            .sum();
+        let mean = (sum + multisample::SAMPLES as u32 / 2) / multisample::SAMPLES as u32;
+        out[c] = expand_to_8(mean, n);
+    }
+    u32::from_le_bytes(out)
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@
 
 use std::sync::Arc;
 
-use super::state::Quality;
+use super::quality::Quality;
 use super::texture::{BaseFormat, Sampler};
 
 /// `GL_COMBINE_RGB` / `GL_COMBINE_ALPHA`.

@@ -5,7 +5,6 @@
 
 use glam::{Vec3, Vec4};
 
-use super::clip::{self, MAX_USER_PLANES};
 use super::fixed;
 use super::state::RenderState;
 use super::{OutOfMemory, TEXTURE_UNITS};
@@ -479,6 +478,9 @@ impl<'a> DrawCall<'a> {
     }
 }
 
+/// `GL_MAX_CLIP_PLANES`: the user clip planes a vertex carries distances for.
+pub const MAX_USER_PLANES: usize = 6;
+
 /// A vertex after the vertex stage, in clip space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipVertex {
@@ -531,6 +533,34 @@ impl ClipVertex {
             }),
         }
     }
+}
+
+/// A bit per frustum x or y plane that the vertex is strictly outside of (x < −w,
+/// y < −w, x > w, y > w; negating is exact).
+#[inline]
+fn frustum_code(v: &ClipVertex) -> u32 {
+    let p = v.pos;
+    Vec4::new(-p.x, -p.y, p.x, p.y)
+        .cmpgt(Vec4::splat(p.w))
+        .bitmask()
+}
+
+/// Whether clipping drops triangle (a, b, c) from the positions alone, before any clipping:
+/// [`clip::triangle`](super::clip::triangle) asks this first, and the deferred lighting
+/// lights no vertex of such a triangle.
+#[inline]
+pub fn rejects(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex) -> bool {
+    // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
+    // than let NaN reach the rasterizer.
+    if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
+        return true;
+    }
+    // Outside one of the frustum's x or y planes with all three vertices, the triangle is
+    // outside it everywhere (the plane's half-space is convex, whatever the signs of w), so
+    // it could only cover pixels beyond the viewport, which the rasterizer never draws.
+    // Most such triangles lie inside the guard band and would otherwise be set up in full
+    // only for their bounding box to come out empty.
+    frustum_code(a) & frustum_code(b) & frustum_code(c) != 0
 }
 
 /// Transformed vertices of one piece of a draw call (up to 2048 primitives), addressed by
@@ -641,7 +671,7 @@ fn fill(
     let mut m = 0;
     for p in 0..count / d.step {
         let at = p * d.step;
-        if d.step == 3 && clip::rejects(&vertices[at], &vertices[at + 1], &vertices[at + 2]) {
+        if d.step == 3 && rejects(&vertices[at], &vertices[at + 1], &vertices[at + 2]) {
             continue;
         }
         let from = if d.provoking_only { d.step - 1 } else { 0 };
@@ -672,7 +702,7 @@ fn light(
     idx: &[usize; LANES],
     m: usize,
 ) {
-    let (color, back_color) = stage.colors_lanes(idx, true);
+    let (color, back_color) = stage.colors_lanes(idx, true, None);
     for (k, &i) in idx.iter().enumerate().take(m) {
         let v = &mut vertices[i - first];
         v.color = Vec4::new(color[0][k], color[1][k], color[2][k], color[3][k]);

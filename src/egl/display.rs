@@ -706,6 +706,18 @@ fn signal(dpy: usize, sync: usize) -> EglResult<()> {
     Ok(())
 }
 
+/// EGL_BAD_PARAMETER unless `sync` is a fence of display `dpy` (after the display's own
+/// checks).
+fn check_sync(dpy: usize, sync: usize) -> EglResult<()> {
+    let g = egl();
+    g.check(dpy)?;
+    if g.syncs.contains_key(&sync) {
+        Ok(())
+    } else {
+        Err(EGL_BAD_PARAMETER)
+    }
+}
+
 /// eglClientWaitSync: every wait ends with the condition satisfied, since waiting is
 /// completing the fence's context here.
 pub fn client_wait_sync(dpy: usize, sync: usize) -> EglResult<EGLint> {
@@ -716,13 +728,7 @@ pub fn client_wait_sync(dpy: usize, sync: usize) -> EglResult<EGLint> {
 /// eglWaitSync: the current context's later commands wait for the fence; completing the
 /// fence now is the strongest such wait.
 pub fn wait_sync(dpy: usize, sync: usize, flags: EGLint) -> EglResult<()> {
-    {
-        let g = egl();
-        g.check(dpy)?;
-        if !g.syncs.contains_key(&sync) {
-            return Err(EGL_BAD_PARAMETER);
-        }
-    }
+    check_sync(dpy, sync)?;
     if flags != 0 {
         return Err(EGL_BAD_PARAMETER);
     }
@@ -734,13 +740,7 @@ pub fn wait_sync(dpy: usize, sync: usize, flags: EGLint) -> EglResult<()> {
 
 /// eglGetSyncAttrib.
 pub fn get_sync_attrib(dpy: usize, sync: usize, attribute: EGLint) -> EglResult<EGLint> {
-    {
-        let g = egl();
-        g.check(dpy)?;
-        if !g.syncs.contains_key(&sync) {
-            return Err(EGL_BAD_PARAMETER);
-        }
-    }
+    check_sync(dpy, sync)?;
     match attribute {
         EGL_SYNC_TYPE => Ok(EGL_SYNC_FENCE),
         EGL_SYNC_CONDITION => Ok(EGL_SYNC_PRIOR_COMMANDS_COMPLETE),

@@ -27,7 +27,7 @@ use GLES_CM::gles::types::GLenum;
 
 /// The GL scenes, in table order: the main ones, the app-class ones (each at RGB565 with
 /// dithering, the default state, and at RGBA8888), then those only the scaling table uses.
-pub const NAMES: [&str; 32] = [
+pub const NAMES: [&str; 33] = [
     "clear-640",
     "flat-640",
     "smooth-640",
@@ -39,6 +39,7 @@ pub const NAMES: [&str; 32] = [
     "texture-1280",
     "lit-vbo",
     "lit-arrays",
+    "lit-point",
     "demo",
     "multitexture",
     "sprites",
@@ -368,9 +369,10 @@ impl Scene {
             "smooth-1280" => fill(Fill::Smooth, 1280, 960, Class::Main),
             "texture-1280" => fill(Fill::Textured, 1280, 960, Class::Main),
             "smooth-320" => fill(Fill::Smooth, 320, 240, Class::Scaling),
-            "lit-vbo" => lit(true, false),
-            "lit-arrays" => lit(false, false),
-            "lit-offscreen" => lit(false, true),
+            "lit-vbo" => lit(true, false, false),
+            "lit-arrays" => lit(false, false, false),
+            "lit-point" => lit(false, false, true),
+            "lit-offscreen" => lit(false, true, false),
             "demo" => demo(),
             "multitexture" => multitexture(),
             "sprites" => sprites(),
@@ -893,8 +895,9 @@ fn two_lights() -> LightSetup {
 /// two directional lights, color material from a per-vertex color, depth-tested. Indexed
 /// from buffer objects, or the same triangles expanded to 300 000 vertices in client arrays.
 /// `offscreen` moves the sphere wholly outside the view volume: what is left is the vertex
-/// stage (transform and lighting) and the rejection of every triangle.
-fn lit(indexed: bool, offscreen: bool) -> Scene {
+/// stage (transform and lighting) and the rejection of every triangle. `point` makes the
+/// first light positional (at (0.5, 0.8, 0.6) in eye space, in front of the sphere).
+fn lit(indexed: bool, offscreen: bool, point: bool) -> Scene {
     const SLICES: usize = 500;
     const STACKS: usize = 100;
     let (w, h) = (640, 480);
@@ -973,8 +976,13 @@ fn lit(indexed: bool, offscreen: bool) -> Scene {
     };
     Scene {
         summary: format!(
-            "{tris} smooth triangles of a UV sphere, 2 directional lights with specular, color \
+            "{tris} smooth triangles of a UV sphere, 2 {} lights with specular, color \
              material, depth test, {how}; {} vertices per frame",
+            if point {
+                "(a positional and a directional)"
+            } else {
+                "directional"
+            },
             vertices
         ),
         class: if offscreen {
@@ -998,7 +1006,11 @@ fn lit(indexed: bool, offscreen: bool) -> Scene {
         indices,
         buffers: indexed,
         textures: Vec::new(),
-        lighting: Some(two_lights()),
+        lighting: Some({
+            let mut l = two_lights();
+            l.lights[0].point = point;
+            l
+        }),
         fog: None,
         setup: vec![
             Op::Projection(Mat4::perspective_rh_gl(0.9, w as f32 / h as f32, 0.5, 20.0)),

@@ -141,24 +141,25 @@ impl Prepared {
         }
     }
 
-    /// Every light is directional and not a spot light: attenuation and spot factor are 1
-    /// and the vertex position does not matter, so [`shade_lanes`](Self::shade_lanes)
-    /// applies.
-    pub fn directional_only(&self) -> bool {
+    /// Some light depends on the vertex position (a positional or spot light), so
+    /// [`shade_lanes`](Self::shade_lanes) reads the eye positions.
+    pub fn reads_position(&self) -> bool {
         self.lights
             .iter()
-            .all(|pl| pl.directional.is_some() && pl.spot.is_none())
+            .any(|pl| pl.directional.is_none() || pl.spot.is_some())
     }
 
-    /// [`shade`](Self::shade) for `LANES` vertices at once, structure of arrays (normals
-    /// `n[axis][lane]`, colors `color[channel][lane]`), so the lanes vectorize. Only for
-    /// [`directional_only`](Self::directional_only) lighting. The operations and their
-    /// order are `shade`'s, so the results are bit for bit the same; the factor att·spot
-    /// is exactly 1 and left out, and `max`/`min` where `shade` uses vector ones follow
-    /// their NaN rule (the second operand wins).
+    /// [`shade`](Self::shade) for `LANES` vertices at once, structure of arrays (eye
+    /// positions `eye[axis][lane]`, read only when [`reads_position`](Self::reads_position),
+    /// normals `n[axis][lane]`, colors `color[channel][lane]`), so the lanes vectorize. The
+    /// operations and their order are `shade`'s (glam's `Vec3` arithmetic written out per
+    /// component), so the results are bit for bit the same; for a directional light that is
+    /// not a spot light the factor att·spot is exactly 1 and left out, and `max`/`min`
+    /// where `shade` uses vector ones follow their NaN rule (the second operand wins).
     #[inline(always)]
     pub fn shade_lanes(
         &self,
+        eye: &[Lane<f32>; 4],
         n: &[Lane<f32>; 3],
         color: &[Lane<f32>; 4],
         back: bool,
@@ -181,48 +182,14 @@ impl Prepared {
             }
         }
         for pl in &self.lights {
-            let l = &pl.light;
-            let (vp, h) = pl.directional.unwrap_or_default();
-            let mut ndotvp = [0.0; LANES];
-            let mut ndoth = [0.0; LANES];
-            for k in 0..LANES {
-                ndotvp[k] = (n[0][k] * vp.x + n[1][k] * vp.y + n[2][k] * vp.z).max(0.0);
-                ndoth[k] = (n[0][k] * h.x + n[1][k] * h.y + n[2][k] * h.z).max(0.0);
-            }
-            let mut sum = [[0.0; LANES]; 3];
-            if self.color_material {
-                let (la, ld) = (l.ambient.to_array(), l.diffuse.to_array());
-                for ch in 0..3 {
-                    for k in 0..LANES {
-                        sum[ch][k] = color[ch][k] * la[ch] + color[ch][k] * ld[ch] * ndotvp[k];
-                    }
+            match pl.directional {
+                // The common case: the same vectors for every lane, att·spot exactly 1.
+                Some((vp, h)) if pl.spot.is_none() => {
+                    self.add_light(pl, f, n, color, &vp, &h, None, &mut c)
                 }
-            } else {
-                let (pa, pd) = (pl.ambient[f].to_array(), pl.diffuse[f].to_array());
-                for ch in 0..3 {
-                    for k in 0..LANES {
-                        sum[ch][k] = pa[ch] + pd[ch] * ndotvp[k];
-                    }
-                }
-            }
-            // The powers: a library call per lane that needs one, so a loop of its own.
-            let mut power = [1.0; LANES];
-            if m.shininess != 0.0 {
-                for k in 0..LANES {
-                    if ndotvp[k] != 0.0 && !(pl.pow_free[f] && ndoth[k] <= 2.0) {
-                        power[k] = ndoth[k].powf(m.shininess);
-                    }
-                }
-            }
-            let s = pl.specular[f].to_array();
-            for ch in 0..3 {
-                for k in 0..LANES {
-                    let lit = if ndotvp[k] != 0.0 {
-                        sum[ch][k] + s[ch] * power[k]
-                    } else {
-                        sum[ch][k]
-                    };
-                    c[ch][k] += min_ps(max_ps(lit, -f32::MAX), f32::MAX);
+                _ => {
+                    let (vp, h, k) = light_lanes(pl, eye);
+                    self.add_light(pl, f, n, color, &vp, &h, Some(&k), &mut c)
                 }
             }
         }
@@ -237,6 +204,76 @@ impl Prepared {
             }
         }
         c
+    }
+
+    /// Adds light `pl`'s term for face `f` to `c`, lane by lane, as `shade` does: `vp` and
+    /// `h` are the unit vector to the light and the half vector, `k` att·spot (`None`: 1).
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn add_light<D: Direction>(
+        &self,
+        pl: &Prepared1,
+        f: usize,
+        n: &[Lane<f32>; 3],
+        color: &[Lane<f32>; 4],
+        vp: &D,
+        h: &D,
+        k: Option<&Lane<f32>>,
+        c: &mut [Lane<f32>; 4],
+    ) {
+        let l = &pl.light;
+        let m = &self.faces[f].material;
+        let mut ndotvp = [0.0; LANES];
+        let mut ndoth = [0.0; LANES];
+        for j in 0..LANES {
+            ndotvp[j] =
+                (n[0][j] * vp.at(0, j) + n[1][j] * vp.at(1, j) + n[2][j] * vp.at(2, j)).max(0.0);
+            ndoth[j] =
+                (n[0][j] * h.at(0, j) + n[1][j] * h.at(1, j) + n[2][j] * h.at(2, j)).max(0.0);
+        }
+        let mut sum = [[0.0; LANES]; 3];
+        if self.color_material {
+            let (la, ld) = (l.ambient.to_array(), l.diffuse.to_array());
+            for ch in 0..3 {
+                for j in 0..LANES {
+                    sum[ch][j] = color[ch][j] * la[ch] + color[ch][j] * ld[ch] * ndotvp[j];
+                }
+            }
+        } else {
+            let (pa, pd) = (pl.ambient[f].to_array(), pl.diffuse[f].to_array());
+            for ch in 0..3 {
+                for j in 0..LANES {
+                    sum[ch][j] = pa[ch] + pd[ch] * ndotvp[j];
+                }
+            }
+        }
+        // The powers: a library call per lane that needs one, so a loop of its own.
+        let mut power = [1.0; LANES];
+        if m.shininess != 0.0 {
+            for j in 0..LANES {
+                if ndotvp[j] != 0.0 && !(pl.pow_free[f] && ndoth[j] <= 2.0) {
+                    power[j] = ndoth[j].powf(m.shininess);
+                }
+            }
+        }
+        let s = pl.specular[f].to_array();
+        for ch in 0..3 {
+            for j in 0..LANES {
+                let mut lit = if ndotvp[j] != 0.0 {
+                    sum[ch][j] + s[ch] * power[j]
+                } else {
+                    sum[ch][j]
+                };
+                if let Some(k) = k {
+                    // `shade` skips a light whose att·spot is 0 or NaN.
+                    if k[j] == 0.0 || k[j].is_nan() {
+                        continue;
+                    }
+                    lit *= k[j];
+                }
+                c[ch][j] += min_ps(max_ps(lit, -f32::MAX), f32::MAX);
+            }
+        }
     }
 
     /// The lit color of a vertex at eye position `eye` with eye-space normal `n` (already
@@ -320,6 +357,97 @@ impl Prepared {
         // max/min rather than clamp: NaN (from NaN inputs) becomes 0.
         c.max(Vec4::ZERO).min(Vec4::splat(self.ceiling))
     }
+}
+
+/// A light's direction (or half vector) as the lanes read it: one vector for every lane,
+/// or one per lane.
+trait Direction {
+    fn at(&self, axis: usize, lane: usize) -> f32;
+}
+
+impl Direction for Vec3 {
+    #[inline(always)]
+    fn at(&self, axis: usize, _lane: usize) -> f32 {
+        self[axis]
+    }
+}
+
+impl Direction for [Lane<f32>; 3] {
+    #[inline(always)]
+    fn at(&self, axis: usize, lane: usize) -> f32 {
+        self[axis][lane]
+    }
+}
+
+/// `Vec3::normalize_or_zero` of one lane's vector, in its order.
+#[inline(always)]
+fn normalize_or_zero3(v: [f32; 3]) -> [f32; 3] {
+    let rcp = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    if rcp.is_finite() && rcp > 0.0 {
+        v.map(|x| x * rcp)
+    } else {
+        [0.0; 3]
+    }
+}
+
+/// Light `pl` seen from each lane's eye position, as [`Prepared::shade`] works it out: the
+/// unit vector to the light, the half vector, and att·spot. For positional and spot lights
+/// (a directional light that is not a spot light needs none of it).
+#[inline(always)]
+fn light_lanes(
+    pl: &Prepared1,
+    eye: &[Lane<f32>; 4],
+) -> ([Lane<f32>; 3], [Lane<f32>; 3], Lane<f32>) {
+    let mut vp = [[0.0; LANES]; 3];
+    let mut h = [[0.0; LANES]; 3];
+    let mut k = [1.0; LANES];
+    match pl.directional {
+        Some((d, hv)) => {
+            (vp, h) = (
+                [[d.x; LANES], [d.y; LANES], [d.z; LANES]],
+                [[hv.x; LANES], [hv.y; LANES], [hv.z; LANES]],
+            );
+        }
+        None => {
+            let p = pl.position;
+            let [kc, kl, kq] = pl.light.attenuation;
+            for j in 0..LANES {
+                let w = eye[3][j];
+                let v = if w == 0.0 || w == 1.0 {
+                    [eye[0][j], eye[1][j], eye[2][j]]
+                } else {
+                    [eye[0][j] / w, eye[1][j] / w, eye[2][j] / w]
+                };
+                let d = [p.x - v[0], p.y - v[1], p.z - v[2]];
+                let dist = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                let u = if dist > 0.0 && dist.is_finite() {
+                    d.map(|x| x / dist)
+                } else {
+                    normalize_or_zero3(d)
+                };
+                let half = normalize_or_zero3([u[0] + 0.0, u[1] + 0.0, u[2] + 1.0]);
+                let denom = kc + kl * dist + kq * dist * dist;
+                k[j] = if denom > 0.0 { 1.0 / denom } else { f32::MAX };
+                for a in 0..3 {
+                    vp[a][j] = u[a];
+                    h[a][j] = half[a];
+                }
+            }
+        }
+    }
+    if let Some((s, cos)) = pl.spot {
+        // A library call per lane, as in `shade`.
+        for j in 0..LANES {
+            let dot = -vp[0][j] * s.x + -vp[1][j] * s.y + -vp[2][j] * s.z;
+            let spot = if dot >= cos {
+                dot.max(0.0).powf(pl.light.spot_exponent)
+            } else {
+                0.0
+            };
+            k[j] *= spot;
+        }
+    }
+    (vp, h, k)
 }
 
 #[cfg(test)]

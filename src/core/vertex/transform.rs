@@ -6,8 +6,8 @@
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use super::lighting::Prepared;
+use super::MAX_USER_PLANES;
 use super::{AttribArray, AttribSource, ClipVertex, DrawCall, Indices, Primitive};
-use crate::core::clip::MAX_USER_PLANES;
 use crate::core::lanes::{max_ps, min_ps, Lane, LANES};
 use crate::core::state::{RenderState, ShadeModel, TexGen};
 use crate::core::TEXTURE_UNITS;
@@ -73,8 +73,7 @@ pub(super) struct Stage<'s, 'd> {
     attenuate: bool,
     planes: usize,
     two_side: bool,
-    /// [`write_lanes`](Self::write_lanes) applies: no skinning, no texgen, and lighting
-    /// (if on) with directional lights only.
+    /// [`write_lanes`](Self::write_lanes) applies: no skinning and no texgen.
     pub batched: bool,
     /// The texture coordinates of units whose are constant over the draw (the others
     /// hold the default).
@@ -95,7 +94,7 @@ pub(super) struct Stage<'s, 'd> {
 /// Lighting after the positions are known, for lit non-indexed triangles and flat-shaded
 /// lit lines, where vertex `first + k` belongs to primitive `k / step` alone: only the
 /// vertices of triangles that clipping does not drop outright
-/// ([`rejects`](crate::core::clip::rejects)), and of those only the provoking one under
+/// ([`rejects`](crate::core::vertex::rejects)), and of those only the provoking one under
 /// flat shading, are lit. No other vertex's color reaches a pixel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Deferred {
@@ -115,9 +114,7 @@ impl<'s, 'd> Stage<'s, 'd> {
             .as_ref()
             .is_some_and(|l| l.two_side && !matches!(draw.primitive, Primitive::Points))
             && !draw.primitive.is_line();
-        let batched = state.matrix_palette.is_none()
-            && state.texgen.iter().all(Option::is_none)
-            && lighting.as_ref().is_none_or(Prepared::directional_only);
+        let batched = state.matrix_palette.is_none() && state.texgen.iter().all(Option::is_none);
         let tex: [TexSource<'d>; TEXTURE_UNITS] = std::array::from_fn(|u| {
             let m = state.texture_matrices[u];
             let matrix = (m != Mat4::IDENTITY).then_some(m);
@@ -346,7 +343,7 @@ impl<'s, 'd> Stage<'s, 'd> {
         } else {
             [[0.0; LANES]; 4]
         };
-        let (color, back_color) = self.colors_lanes(idx, light);
+        let (color, back_color) = self.colors_lanes(idx, light, self.need_eye.then_some(&eye));
         // `out` holds `template()`: only what varies per vertex is written, component by
         // component (assembling vectors from lanes costs more than the stores).
         if self.points || self.planes > 0 {
@@ -389,12 +386,14 @@ impl<'s, 'd> Stage<'s, 'd> {
 
     /// The front and back colors of vertices `idx` for [`write_lanes`](Self::write_lanes):
     /// lit when lighting is on and `light` (see [`lit`](Self::lit)), otherwise the given
-    /// colors clamped.
+    /// colors clamped. `eye` holds their eye positions when the caller has them; they are
+    /// worked out here when a light needs them and it does not.
     #[inline(always)]
     pub fn colors_lanes(
         &self,
         idx: &[usize; LANES],
         light: bool,
+        eye: Option<&[Lane<f32>; 4]>,
     ) -> ([Lane<f32>; 4], [Lane<f32>; 4]) {
         let mut given = [[0.0; LANES]; 4];
         self.draw.color.gather(idx, &mut given);
@@ -418,12 +417,24 @@ impl<'s, 'd> Stage<'s, 'd> {
         if self.state.normalize {
             normalize_lanes(&mut normal);
         }
-        let front = l.shade_lanes(&normal, &given, false);
+        let computed;
+        let eye = match eye {
+            Some(eye) => eye,
+            None if l.reads_position() => {
+                let mut p = [[0.0; LANES]; 4];
+                self.draw.position.gather(idx, &mut p);
+                computed = mat4_lanes(&self.modelview, &p);
+                &computed
+            }
+            // Directional lights only: no position is read.
+            None => &[[0.0; LANES]; 4],
+        };
+        let front = l.shade_lanes(eye, &normal, &given, false);
         let back = if self.two_side {
             for v in normal.iter_mut().flatten() {
                 *v = -*v;
             }
-            l.shade_lanes(&normal, &given, true)
+            l.shade_lanes(eye, &normal, &given, true)
         } else {
             front
         };
@@ -550,9 +561,8 @@ fn clamp01(c: Vec4) -> Vec4 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{run, AttribSource, ComponentType, Indices};
+    use super::super::{rejects, run, AttribSource, ComponentType, Indices};
     use super::*;
-    use crate::core::clip;
 
     fn draw<'a>(bytes: &'a [u8], prim: Primitive, count: usize) -> DrawCall<'a> {
         DrawCall::new(
@@ -586,7 +596,7 @@ mod tests {
         if let Some(d) = stage.deferred {
             let k = i - d.first;
             let whole = k < n / d.step * d.step;
-            let rejected = d.step == 3 && clip::rejects(tri[0], tri[1], tri[2]);
+            let rejected = d.step == 3 && rejects(tri[0], tri[1], tri[2]);
             if !whole || rejected {
                 v.color = Vec4::ZERO;
                 v.back_color = Vec4::ZERO;
@@ -636,7 +646,16 @@ mod tests {
         let col: Vec<f32> = (0..n)
             .flat_map(|k| (0..4).map(move |j| at(k + 2, j) * 0.5))
             .collect();
-        let (pb, nb, cb) = (bytes(&pos), bytes(&nrm), bytes(&col));
+        // Positions with a w of their own (2, 0, 1, -0.5, ...): eye positions a positional
+        // light divides by their w.
+        let pos4: Vec<f32> = (0..n)
+            .flat_map(|k| {
+                (0..3)
+                    .map(move |j| at(k, j))
+                    .chain([[2.0, 0.0, 1.0, -0.5][k % 4]])
+            })
+            .collect();
+        let (pb, nb, cb, p4b) = (bytes(&pos), bytes(&nrm), bytes(&col), bytes(&pos4));
         let fixed: Vec<u8> = (0..2 * n as i32)
             .flat_map(|k| (k * 40_000 - 300_000).to_ne_bytes())
             .collect();
@@ -656,7 +675,7 @@ mod tests {
             position: dir.extend(0.0),
             ..Light::default()
         };
-        for case in 0..64u32 {
+        for case in 0..256u32 {
             let mut s = RenderState::new(8, 8);
             s.modelview = Mat4::from_scale(Vec3::new(1.5, 0.5, 2.0))
                 * Mat4::from_rotation_x(0.4)
@@ -677,6 +696,30 @@ mod tests {
                     color_material: case & 16 == 0,
                     ..Lighting::default()
                 };
+                if case & 64 != 0 {
+                    // Positional lights with attenuation (one at w = 2), a spot light,
+                    // and a directional spot light.
+                    l.lights[0].position = Vec4::new(1.0, 2.0, -3.0, 1.0);
+                    l.lights[0].attenuation = [0.5, 0.25, 0.125];
+                    l.lights[1].position = Vec4::new(-2.0, 0.5, 4.0, 2.0);
+                    l.lights[1].spot_cutoff = 60.0;
+                    l.lights[1].spot_exponent = 3.5;
+                    l.lights[1].spot_direction = Vec3::new(0.2, -0.1, -1.0);
+                    let mut spot = light(Vec3::new(0.1, 0.9, 0.4), 0.5);
+                    spot.spot_cutoff = 90.0;
+                    spot.spot_exponent = 1.0;
+                    spot.spot_direction = Vec3::new(0.0, -1.0, 0.0);
+                    l.lights.push(spot);
+                    if case & 128 != 0 {
+                        // Zero denominators: saturating lights.
+                        l.lights[0].attenuation = [0.0, 0.0, 0.0];
+                        l.lights.push(Light {
+                            position: Vec4::new(0.5, 0.5, 0.5, 1.0),
+                            attenuation: [0.0, 1.0, 0.0],
+                            ..light(Vec3::ZERO, 0.2)
+                        });
+                    }
+                }
                 l.front.specular = Vec4::new(0.5, 0.6, 0.7, 1.0);
                 l.front.shininess = 20.0;
                 l.back.shininess = 0.0;
@@ -693,6 +736,9 @@ mod tests {
                 Primitive::Triangles
             };
             let mut d = draw(&pb, prim, n);
+            if case & 128 != 0 {
+                d.position = array(&p4b, 4);
+            }
             d.normal = AttribSource::Array(array(&nb, 3));
             d.color = AttribSource::Array(array(&cb, 4));
             if case & 2 != 0 {
@@ -899,16 +945,24 @@ mod tests {
         let n = pos.len() / 3;
         let all: Vec<u16> = (0..n as u16).collect();
         use ShadeModel::{Flat, Smooth};
-        for (shade, light_w, two_side, prim) in [
-            (Flat, 0.0, false, Primitive::Triangles),
-            (Flat, 0.0, true, Primitive::Triangles),
-            (Flat, 1.0, true, Primitive::Triangles),
-            (Flat, 0.0, false, Primitive::Lines),
-            (Flat, 1.0, false, Primitive::Lines),
-            (Smooth, 0.0, true, Primitive::Triangles),
+        // Texgen keeps a draw on the one-vertex path, where `provoking` does what `deferred`
+        // does on the batched one.
+        for (shade, light_w, two_side, prim, texgen) in [
+            (Flat, 0.0, false, Primitive::Triangles, false),
+            (Flat, 0.0, true, Primitive::Triangles, false),
+            (Flat, 1.0, true, Primitive::Triangles, false),
+            (Flat, 1.0, true, Primitive::Triangles, true),
+            (Flat, 0.0, false, Primitive::Lines, false),
+            (Flat, 1.0, false, Primitive::Lines, false),
+            (Flat, 1.0, false, Primitive::Lines, true),
+            (Smooth, 0.0, true, Primitive::Triangles, false),
+            (Smooth, 1.0, false, Primitive::Triangles, true),
         ] {
             let mut s = RenderState::new(48, 48);
             s.shade_model = shade;
+            if texgen {
+                s.texgen[0] = Some(TexGen::NormalMap);
+            }
             s.normalize = true;
             let mut lt = Lighting {
                 lights: vec![Light {
@@ -952,7 +1006,8 @@ mod tests {
             let step = if prim == Primitive::Lines { 2 } else { 3 };
             let stage = Stage::new(&s, &range);
             assert_eq!(stage.provoking, (shade == Flat).then_some((0, step)));
-            assert_eq!(stage.deferred.is_some(), light_w == 0.0, "{prim:?}");
+            assert_eq!(stage.batched, !texgen);
+            assert_eq!(stage.deferred.is_some(), !texgen, "{prim:?}");
             // Indexed, every vertex is lit: the reference.
             let lit_all = image(Indices::U16(&all));
             let provoking_only = image(Indices::Range { first: 0, count: n });

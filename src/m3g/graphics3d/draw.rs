@@ -81,7 +81,7 @@ impl Graphics3D {
                     draw_submesh(&mut s, b, textures, stats, vb, ib, app, item, lit);
                 }
                 What::Sprite(sprite, app) => {
-                    draw_sprite(&s, b, sprite, app, modelview, item.alpha);
+                    draw_sprite(&s, b, textures, stats, sprite, app, modelview, item.alpha);
                 }
             }
             b.frame.flush_if_full(&mut b.target);
@@ -253,9 +253,20 @@ impl TexCache {
         } else {
             MagFilter::Nearest
         };
-        let (ws, wt) = (wrap(t.wrap[0]), wrap(t.wrap[1]));
-        let key = (Rc::as_ptr(&t.image.0) as usize, min, mag, ws, wt);
-        let d = t.image.d();
+        let key = (min, mag, wrap(t.wrap[0]), wrap(t.wrap[1]));
+        self.image_sampler(&t.image, key, stats)
+    }
+
+    /// The core texture of `image` sampled as `(min, mag, wrap s, wrap t)` says (a sprite's
+    /// image, or a Texture2D's).
+    pub(super) fn image_sampler(
+        &mut self,
+        image: &Image2D,
+        (min, mag, ws, wt): (MinFilter, MagFilter, Wrap, Wrap),
+        stats: &mut RenderStats,
+    ) -> Arc<Sampler> {
+        let key = (Rc::as_ptr(&image.0) as usize, min, mag, ws, wt);
+        let d = image.d();
         if let Some(e) = self.entries.get_mut(&key) {
             if e.pixels.as_ref().is_none_or(|p| *p == d.pixels) {
                 e.used = self.calls;
@@ -267,7 +278,7 @@ impl TexCache {
         self.entries.insert(
             key,
             TexEntry {
-                _image: t.image.clone(),
+                _image: image.clone(),
                 pixels: d.mutable.then(|| d.pixels.clone()),
                 sampler: sampler.clone(),
                 used: self.calls,
