@@ -73,6 +73,9 @@ pub struct Prepared {
     /// The upper bound of a lit channel: 1, or the largest float when lit colors are not
     /// clamped after lighting.
     ceiling: f32,
+    /// See [`reads_position`](Self::reads_position); asked per group of vertices, so
+    /// derived once.
+    reads_position: bool,
 }
 
 /// The cosine of a spot cutoff in degrees, exact at 90.
@@ -86,7 +89,7 @@ pub fn cos_cutoff(degrees: f32) -> f32 {
 
 impl Prepared {
     pub fn new(l: &Lighting) -> Prepared {
-        let lights = l
+        let lights: Vec<Prepared1> = l
             .lights
             .iter()
             .map(|light| {
@@ -128,7 +131,11 @@ impl Prepared {
             material: *m,
             base: m.emission + m.ambient * l.model_ambient,
         };
+        let reads_position = lights
+            .iter()
+            .any(|pl| pl.directional.is_none() || pl.spot.is_some());
         Prepared {
+            reads_position,
             lights,
             model_ambient: l.model_ambient,
             faces: [face(&l.front), face(&l.back)],
@@ -144,9 +151,7 @@ impl Prepared {
     /// Some light depends on the vertex position (a positional or spot light), so
     /// [`shade_lanes`](Self::shade_lanes) reads the eye positions.
     pub fn reads_position(&self) -> bool {
-        self.lights
-            .iter()
-            .any(|pl| pl.directional.is_none() || pl.spot.is_some())
+        self.reads_position
     }
 
     /// [`shade`](Self::shade) for `LANES` vertices at once, structure of arrays (eye

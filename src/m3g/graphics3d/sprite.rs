@@ -21,6 +21,17 @@ fn f32_bytes(v: &[f32]) -> Vec<u8> {
     v.iter().flat_map(|x| x.to_ne_bytes()).collect()
 }
 
+/// A tightly packed array of `size` floats per vertex.
+fn floats(data: &[u8], size: usize) -> AttribArray<'_> {
+    AttribArray {
+        data,
+        ty: ComponentType::Float,
+        size,
+        stride: 4 * size,
+        normalized: false,
+    }
+}
+
 /// A sprite's screen rectangle (M3G window coordinates: x right, y down), depth in NDC, and
 /// eye distance; `None` when culled.
 pub(crate) fn sprite_rect(
@@ -128,8 +139,6 @@ pub(super) fn draw_sprite(
     s.projection = Mat4::from_cols(Vec4::X, Vec4::Y, Vec4::ZERO, Vec4::new(0.0, 0.0, z, 1.0));
     s.fog = a.fog.as_ref().map(|f| core_fog(&f.d()));
     let eye_z = if s.fog.is_some() { -dist } else { 0.0 };
-    s.textures = Default::default();
-    s.texture_matrices[0] = Mat4::IDENTITY;
     let key = (
         MinFilter::Nearest,
         MagFilter::Nearest,
@@ -165,13 +174,6 @@ pub(super) fn draw_sprite(
     let pos: Vec<f32> = corners.iter().flat_map(|c| [c.0, c.1, eye_z]).collect();
     let tex: Vec<f32> = corners.iter().flat_map(|c| [c.2, c.3]).collect();
     let (pb, tb) = (f32_bytes(&pos), f32_bytes(&tex));
-    let floats = |data, size| AttribArray {
-        data,
-        ty: ComponentType::Float,
-        size,
-        stride: 4 * size,
-        normalized: false,
-    };
     let mut call = DrawCall::new(
         Primitive::Triangles,
         Indices::Range {
@@ -261,13 +263,6 @@ mod tests {
             return;
         }
         let (pb, cb) = (f32_bytes(&pos), f32_bytes(&col));
-        let floats = |data, size| AttribArray {
-            data,
-            ty: ComponentType::Float,
-            size,
-            stride: 4 * size,
-            normalized: false,
-        };
         let count = pos.len() / 3;
         let mut call = DrawCall::new(
             Primitive::Triangles,
