@@ -147,7 +147,12 @@ fn bad_arguments_and_files_exit_2() {
         vec!["x.m3g".into(), "--step".into(), "10".into()],
         vec!["x.m3g".into(), "--size".into(), "10".into()],
         vec!["x.m3g".into(), "--bogus".into()],
-        vec!["a.m3g".into(), "b.m3g".into()],
+        vec![
+            "a.m3g".into(),
+            "b.m3g".into(),
+            "--out".into(),
+            "x.png".into(),
+        ],
         vec![
             "x.m3g".into(),
             "--time".into(),
