@@ -20,7 +20,7 @@ headers:
 # Installs the stripped library (debug info in LIBDIR/.debug), its compatibility names, the
 # glvnd EGL vendor (libEGL_gles_cm.so.0 and PREFIX/share/glvnd/egl_vendor.d/50_gles_cm.json),
 # the headers (in PREFIX/include/gles-cm), the pkg-config files glesv1_cm.pc and egl.pc and
-# m3g-render under DESTDIR/PREFIX; see scripts/install.sh. STRIP=0 keeps the debug info in
+# m3g under DESTDIR/PREFIX; see scripts/install.sh. STRIP=0 keeps the debug info in
 # place, COMPAT=0 leaves out the compatibility names (do so where glvnd is installed),
 # GLVND=0 the glvnd vendor.
 PREFIX ?= /usr/local

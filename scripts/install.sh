@@ -13,7 +13,7 @@
 #                                         glvnd's vendor file, naming LIBDIR/libEGL_gles_cm.so.0
 #   LIBDIR/pkgconfig/glesv1_cm.pc, egl.pc
 #   PREFIX/include/gles-cm/{GLES,EGL,KHR}/*.h
-#   PREFIX/bin/m3g-render                 (stripped, its debug info in PREFIX/bin/.debug)
+#   PREFIX/bin/m3g                        (stripped, its debug info in PREFIX/bin/.debug)
 #
 # LIBDIR defaults to PREFIX/lib. The headers go into a private directory that only the
 # pkg-config files name (`pkg-config --cflags glesv1_cm egl`), so they never shadow the system's
@@ -46,7 +46,7 @@ destdir=${DESTDIR:-}
 here=$(cd "$(dirname "$0")/.." && pwd)
 target=${CARGO_TARGET_DIR:-$here/target}
 lib=${GLES_CM_LIB:-$target/release/libGLES_CM.so}
-bin=$target/release/m3g-render
+bin=$target/release/m3g
 
 soname=libGLES_CM.so.1
 compat="libGLESv1_CM.so.1 libGLESv1_CM.so libEGL.so.1 libEGL.so"
@@ -65,7 +65,7 @@ d_bin=$destdir$prefix/bin
 if [ "$mode" = uninstall ]; then
     rm -f "$d_lib/$soname" "$d_lib/.debug/$soname.debug" "$d_lib/libGLES_CM.so" \
         "$d_lib/pkgconfig/glesv1_cm.pc" "$d_lib/pkgconfig/egl.pc" \
-        "$d_bin/m3g-render" "$d_bin/.debug/m3g-render.debug"
+        "$d_bin/m3g" "$d_bin/.debug/m3g.debug"
     rm -f "$d_vendor/$vendor_json"
     for name in libGLESv1_CM.so.1 libGLESv1_CM.so libEGL.so.1 libEGL.so $vendor; do
         # Only our links: another implementation's file of that name stays.
@@ -123,8 +123,8 @@ if [ "$glvnd" = 1 ]; then
 JSON
     chmod 644 "$d_vendor/$vendor_json"
 fi
-install_elf "$bin" "$d_bin" m3g-render
-chmod 755 "$d_bin/m3g-render"
+install_elf "$bin" "$d_bin" m3g
+chmod 755 "$d_bin/m3g"
 
 rm -rf "$d_inc"
 mkdir -p "$d_inc"

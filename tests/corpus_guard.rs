@@ -90,7 +90,7 @@ fn every_corpus_test_gets_the_corpus_from_the_helper() {
         }
     }
     assert!(wrong.is_empty(), "{wrong:#?}");
-    // m3g_loader, m3g_animation, m3g_hostile, m3g_render_cli and this file.
+    // m3g_loader, m3g_animation, m3g_hostile, m3g_cli and this file.
     assert!(
         checked >= 5,
         "only {checked} test files use the corpus helper"

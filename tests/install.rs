@@ -1,6 +1,6 @@
 //! The install step as a packager runs it: `scripts/install.sh PREFIX` with `DESTDIR` stages a
 //! stripped library (debug info split into `.debug`), its versioned SONAME and compatibility
-//! names, the glvnd vendor name and vendor file, private headers, pkg-config files with the API versions, and `m3g-render`. The
+//! names, the glvnd vendor name and vendor file, private headers, pkg-config files with the API versions, and `m3g`. The
 //! README's example program, built with `pkg-config --cflags --libs glesv1_cm egl` against
 //! the staged tree alone, then runs and prints the right pixel; `--uninstall` removes every
 //! file again. Skipped (with a message) where pkg-config or binutils are not installed.
@@ -21,10 +21,10 @@ fn tools_missing() -> Option<&'static str> {
         .find(|t| Command::new(t).arg("--version").output().is_err())
 }
 
-/// The cargo target directory the tests run from (`m3g-render` is built there), so the
+/// The cargo target directory the tests run from (`m3g` is built there), so the
 /// script is exercised through `CARGO_TARGET_DIR` rather than its default.
 fn target_dir() -> PathBuf {
-    Path::new(env!("CARGO_BIN_EXE_m3g-render"))
+    Path::new(env!("CARGO_BIN_EXE_m3g"))
         .ancestors()
         .nth(2)
         .expect("target dir")
@@ -115,8 +115,8 @@ fn staged_install_is_stripped_versioned_private_and_builds_the_readme_program() 
     }
     let names: Vec<&str> = files.keys().map(String::as_str).collect();
     let mut expected = vec![
-        "bin/.debug/m3g-render.debug",
-        "bin/m3g-render",
+        "bin/.debug/m3g.debug",
+        "bin/m3g",
         "lib/.debug/libGLES_CM.so.1.debug",
         "lib/libEGL.so",
         "lib/libEGL.so.1",
@@ -205,7 +205,7 @@ fn staged_install_is_stripped_versioned_private_and_builds_the_readme_program() 
     );
     let dynamic = run(Command::new("readelf").arg("-d").arg(&lib));
     assert!(dynamic.contains("[libGLES_CM.so.1]"), "{dynamic}");
-    assert!(!sections(&root.join("bin/m3g-render")).contains(".debug_info"));
+    assert!(!sections(&root.join("bin/m3g")).contains(".debug_info"));
 
     // pkg-config: API versions, the package version apart, the private include directory.
     assert_eq!(pkg_config(&destdir, &["--modversion", "glesv1_cm"]), "1.1");
@@ -245,8 +245,8 @@ fn staged_install_is_stripped_versioned_private_and_builds_the_readme_program() 
     println!("README program: {out}");
     assert!(out.contains("pixel (32, 16) = 255 128 0 255"), "{out}");
 
-    // The installed m3g-render runs (no arguments: usage, exit status 2).
-    let m3g = Command::new(root.join("bin/m3g-render")).output().unwrap();
+    // The installed m3g runs (no arguments: usage, exit status 2).
+    let m3g = Command::new(root.join("bin/m3g")).output().unwrap();
     assert_eq!(m3g.status.code(), Some(2), "{m3g:?}");
 
     std::fs::remove_dir_all(&work).unwrap();

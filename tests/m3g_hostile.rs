@@ -12,7 +12,7 @@ use std::time::Duration;
 use GLES_CM::m3g::loader::{render_roots, LoadError, Loader, MemoryFileSystem, RenderTarget};
 use GLES_CM::m3g::*;
 
-const EXE: &str = env!("CARGO_BIN_EXE_m3g-render");
+const EXE: &str = env!("CARGO_BIN_EXE_m3g");
 
 /// The fuzz targets' rendering of what loaded, compiled and run here too so that it
 /// cannot rot between fuzzing runs (which need nightly and cargo-fuzz).
@@ -272,7 +272,7 @@ fn a_png_referenced_eight_times_is_loaded_once() {
     let _ = std::fs::remove_dir_all(&d);
 }
 
-/// `m3g-render --max-memory` sets the budget; past it the tool exits with code 2 and the
+/// `m3g --max-memory` sets the budget; past it the tool exits with code 2 and the
 /// loader's message.
 #[test]
 fn m3g_render_max_memory_sets_the_budget() {

@@ -1045,8 +1045,8 @@ fn corpus_renders_compare_with_the_reference_images() {
 
 #[test]
 fn m3g_render_cli_renders_and_reports_errors() {
-    let exe = env!("CARGO_BIN_EXE_m3g-render");
-    let tmp = std::env::temp_dir().join(format!("m3g-render-{}", std::process::id()));
+    let exe = env!("CARGO_BIN_EXE_m3g");
+    let tmp = std::env::temp_dir().join(format!("m3g-tool-{}", std::process::id()));
     std::fs::create_dir_all(&tmp).unwrap();
     let out = tmp.join("simple.png");
     let st = std::process::Command::new(exe)
@@ -1074,7 +1074,7 @@ fn m3g_render_cli_renders_and_reports_errors() {
             .output()
             .unwrap();
         assert!(!o.status.success(), "{args:?}");
-        assert!(String::from_utf8_lossy(&o.stderr).starts_with("m3g-render: "));
+        assert!(String::from_utf8_lossy(&o.stderr).starts_with("m3g: "));
     }
     let _ = std::fs::remove_dir_all(&tmp);
 }

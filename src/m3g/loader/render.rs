@@ -1,5 +1,5 @@
 //! Rendering a loaded scene the way the corpus reference images were made (the code path of
-//! the `m3g-render` tool, shared with the tests).
+//! the `m3g` tool, shared with the tests).
 
 use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
 use crate::m3g::{Graphics3D, Object3D, Object3DExt, World};
