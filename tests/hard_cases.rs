@@ -1,6 +1,6 @@
 //! The numerical hard cases of the GLES checklist (§4, cases 1–30), one test
 //! each, named after the case, and the M3G hard cases of `m3g-checklist.md` §5 that
-//! `tests/m3g_*.rs` do not already cover (in `tests/m3g_hard_cases.rs`). Each asserts the
+//! `crates/m3g/tests/m3g_*.rs` do not already cover (in `crates/m3g/tests/m3g_hard_cases.rs`). Each asserts the
 //! behavior the specification prescribes or, where it leaves room, the one we document, and
 //! that no NaN, infinity or garbage pixel appears: every pixel is either the clear color or
 //! a color the draw can produce.
@@ -13,13 +13,13 @@ use std::ffi::c_void;
 use std::ptr::{null, null_mut};
 
 use glam::{Mat4, Vec3, Vec4};
-use GLES_CM::core::reference;
-use GLES_CM::core::state::{
+use gles_cm_core::reference;
+use gles_cm_core::state::{
     Blend, BlendFactor, Light, Lighting, LogicOp, Material, PolygonOffset, StencilOp, StencilTest,
 };
-use GLES_CM::core::texenv::{Fog, FogMode};
-use GLES_CM::core::{
-    self, clip, AttribArray, AttribSource, ColorFormat, CompareFunc, ComponentType, DepthFormat,
+use gles_cm_core::texenv::{Fog, FogMode};
+use gles_cm_core::{
+    clip, AttribArray, AttribSource, ColorFormat, CompareFunc, ComponentType, DepthFormat,
     DrawCall, Indices, Primitive, RenderState, Target, TargetFormat,
 };
 use GLES_CM::egl::ffi::*;
@@ -84,7 +84,7 @@ fn call<'a>(prim: Primitive, pos: &'a [u8], size: usize, col: Option<&'a [u8]>) 
 fn draw(s: &RenderState, t: &mut Target, prim: Primitive, pos: &[f32], size: usize, col: &[f32]) {
     let (p, c) = (bytes(pos), bytes(col));
     let d = call(prim, &p, size, (!col.is_empty()).then_some(&c[..]));
-    core::render(s, &d, t).unwrap();
+    gles_cm_core::render(s, &d, t).unwrap();
 }
 
 /// The same draw through the reference renderer.
@@ -144,8 +144,11 @@ fn assert_clean(t: &Target, lo: [u8; 4], hi: [u8; 4]) {
 }
 
 /// The vertex stage's output for a draw: every value finite.
-fn assert_vertices_finite(s: &RenderState, d: &DrawCall<'_>) -> Vec<core::vertex::ClipVertex> {
-    let v = core::vertex::run(s, d).unwrap();
+fn assert_vertices_finite(
+    s: &RenderState,
+    d: &DrawCall<'_>,
+) -> Vec<gles_cm_core::vertex::ClipVertex> {
+    let v = gles_cm_core::vertex::run(s, d).unwrap();
     let (lo, hi) = d.indices.range().unwrap();
     let out: Vec<_> = (lo..=hi).map(|i| v[i]).collect();
     for v in &out {
@@ -450,7 +453,7 @@ fn case_01_w_negative_vertices_are_clipped_before_the_divide() {
 
 #[test]
 fn case_02_near_plane_crossing_screen_covering_triangle() {
-    use GLES_CM::core::vertex::ClipVertex;
+    use gles_cm_core::vertex::ClipVertex;
     let v = |x: f32, y: f32, z: f32, w: f32| ClipVertex::new(Vec4::new(x, y, z, w), Vec4::ONE);
     // Crosses the near plane (z = −w) and leaves the band on two sides.
     let (a, b, c) = (
@@ -584,7 +587,7 @@ fn case_04_huge_coordinates_and_viewports_larger_than_the_surface() {
             array(&data, ty, 3),
         );
         let (mut a, mut b) = (target(64, 48), target(64, 48));
-        core::render(&s, &d, &mut a).unwrap();
+        gles_cm_core::render(&s, &d, &mut a).unwrap();
         reference::render(&s, &d, &mut b);
         assert_eq!(covered(&a), covered(&b), "{ty:?}");
         assert!(covered(&a) > 64 * 48 / 3, "{ty:?}");
@@ -592,7 +595,7 @@ fn case_04_huge_coordinates_and_viewports_larger_than_the_surface() {
     // A 8192 × 8192 viewport (GL_MAX_VIEWPORT_DIMS) on a 64 × 48 surface, offset so the
     // surface sees part of it: pixels match the reference.
     let mut v = RenderState::new(64, 48);
-    v.viewport = core::Viewport {
+    v.viewport = gles_cm_core::Viewport {
         x: -4000,
         y: -4000,
         width: 8192,
@@ -775,7 +778,7 @@ fn case_07_degenerate_triangles_produce_no_pixels() {
         ] {
             let d = DrawCall::new(prim, Indices::U16(idx), array(&p, ComponentType::Float, 3));
             let mut t = target(32, 32);
-            core::render(&s, &d, &mut t).unwrap();
+            gles_cm_core::render(&s, &d, &mut t).unwrap();
             assert_eq!(covered(&t), 0, "{idx:?} {prim:?}");
             assert_vertices_finite(&s, &d);
         }
@@ -794,7 +797,7 @@ fn case_07_degenerate_triangles_produce_no_pixels() {
         )
     };
     let mut t = target(32, 32);
-    core::render(&add, &d, &mut t).unwrap();
+    gles_cm_core::render(&add, &d, &mut t).unwrap();
     assert_eq!(count(&t, |p| p[0] > 51), 0, "no pixel hit twice");
 }
 
@@ -931,7 +934,7 @@ fn lit_vertices(
     pos: &[f32],
     size: usize,
     normal: [f32; 4],
-) -> Vec<core::vertex::ClipVertex> {
+) -> Vec<gles_cm_core::vertex::ClipVertex> {
     let p = bytes(pos);
     let mut d = call(Primitive::Triangles, &p, size, None);
     d.normal = AttribSource::Constant(normal);
@@ -1176,7 +1179,7 @@ fn case_15_fog_clipped_at_far_zero_density_start_equals_end_huge_z() {
         start,
         end,
         color: [0.0, 0.0, 1.0, 1.0],
-        quality: core::state::Quality::Nicest,
+        quality: gles_cm_core::state::Quality::Nicest,
     };
     // An EXP2-fogged triangle crossing the far plane: the fog factor stays continuous up to
     // the clip edge (the reference clips exactly).
@@ -1194,7 +1197,7 @@ fn case_15_fog_clipped_at_far_zero_density_start_equals_end_huge_z() {
     );
     let e = reference::compare(&fast, &slow);
     assert!(e.max <= 2, "{e:?}");
-    // Density 0: no fog. start == end: a hard edge (documented in core::texenv). Huge z.
+    // Density 0: no fog. start == end: a hard edge (documented in gles_cm_core::texenv). Huge z.
     assert_eq!(fog(FogMode::Exp, 0.0, 0.0, 1.0).factor(1e30), 1.0);
     assert_eq!(fog(FogMode::Exp2, 0.0, 0.0, 1.0).factor(f32::MAX), 1.0);
     let edge = fog(FogMode::Linear, 0.0, 5.0, 5.0);
@@ -1209,7 +1212,7 @@ fn case_15_fog_clipped_at_far_zero_density_start_equals_end_huge_z() {
 
 #[test]
 fn case_20_fixed_point_overflow_saturation_and_nan() {
-    use GLES_CM::core::fixed;
+    use gles_cm_core::fixed;
     assert_eq!(fixed::from_f32(32768.0), i32::MAX);
     assert_eq!(fixed::from_f32(-32769.0), i32::MIN);
     assert_eq!(fixed::from_f32(f32::INFINITY), i32::MAX);
@@ -1352,7 +1355,7 @@ fn case_29_out_of_range_indices_do_not_crash() {
             array(&p, ComponentType::Float, 3),
         );
         let mut t = target(16, 16);
-        core::render(&s, &d, &mut t).unwrap();
+        gles_cm_core::render(&s, &d, &mut t).unwrap();
         assert_clean(&t, [255; 4], [255; 4]);
         let mut r = target(16, 16);
         reference::render(&s, &d, &mut r);
@@ -1912,7 +1915,7 @@ fn case_21_quantized_byte_and_short_meshes_meet_without_cracks() {
             array(&data, ty, 3),
         );
         d.color = AttribSource::Array(array(&col, ComponentType::Float, 4));
-        core::render(&s, &d, &mut t).unwrap();
+        gles_cm_core::render(&s, &d, &mut t).unwrap();
     }
     for y in 0..16 {
         for x in 0..32 {
@@ -1920,7 +1923,7 @@ fn case_21_quantized_byte_and_short_meshes_meet_without_cracks() {
         }
     }
     // M3G: morph results beyond the 8-bit range are undefined, but finite and no error.
-    use GLES_CM::m3g::{MorphingMesh, TriangleStripArray, VertexArray, VertexBuffer};
+    use m3g::{MorphingMesh, TriangleStripArray, VertexArray, VertexBuffer};
     let vb = |v: i8| {
         let a = VertexArray::new(3, 3, 1).unwrap();
         a.set_bytes(0, 3, &[v, 0, 0, 0, v, 0, 0, 0, v]).unwrap();
@@ -2079,7 +2082,7 @@ fn case_25_get_conversions_rounding_normalization_saturation_and_float_bits() {
 
 #[test]
 fn case_26_skinning_precision_palette_indices_and_weights() {
-    use GLES_CM::m3g::*;
+    use m3g::*;
     // A chain of 32 bones, each 1 unit along its parent's x and rotated 10° about z: the
     // tip vertex against an f64 evaluation of the compounded matrices.
     const N: usize = 32;
@@ -2142,7 +2145,7 @@ fn case_26_skinning_precision_palette_indices_and_weights() {
     let (p, _) = m.skinned_vertices().unwrap();
     assert!((p[0][1] - 3.0).abs() < 1e-4, "{:?}", p[0]);
     // GL matrix palette: an index at MAX_PALETTE_MATRICES is INVALID_VALUE; in an index
-    // array it contributes nothing (documented in core::vertex); weights are used as given.
+    // array it contributes nothing (documented in gles_cm_core::vertex); weights are used as given.
     let _gl = Gl::rgba8(4, 4);
     let mut max = 0;
     // SAFETY: a context is current.
@@ -2168,14 +2171,14 @@ fn case_26_skinning_precision_palette_indices_and_weights() {
     d.position.stride = 0;
     d.matrix_index = Some(array(&idx, ComponentType::UnsignedByte, 2));
     d.weight = Some(array(&w, ComponentType::Float, 2));
-    let v = core::vertex::run(&s, &d).unwrap();
+    let v = gles_cm_core::vertex::run(&s, &d).unwrap();
     assert_eq!(v[0].eye, Vec3::new(0.5, 0.0, 0.0));
     assert_eq!(v[1].eye, Vec3::new(0.3, 0.0, 0.0));
 }
 
 #[test]
 fn case_27_quaternion_slerp_small_angles_and_the_4d_path() {
-    use GLES_CM::m3g::KeyframeSequence as KS;
+    use m3g::KeyframeSequence as KS;
     let q = |deg: f64| {
         let h = (deg * 0.5).to_radians();
         [0.0, 0.0, h.sin() as f32, h.cos() as f32]
@@ -2214,7 +2217,7 @@ fn case_27_quaternion_slerp_small_angles_and_the_4d_path() {
 
 #[test]
 fn case_28_m3g_non_invertible_camera_and_node_transforms() {
-    use GLES_CM::m3g::*;
+    use m3g::*;
     let ae = |r: Result<()>| matches!(r, Err(M3gError::Arithmetic(_)));
     // A singular camera transform: setCamera and render(World) throw ArithmeticException.
     let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();

@@ -21,14 +21,20 @@ fn tools_missing() -> Option<&'static str> {
         .find(|t| Command::new(t).arg("--version").output().is_err())
 }
 
-/// The cargo target directory the tests run from (`m3g` is built there), so the
-/// script is exercised through `CARGO_TARGET_DIR` rather than its default.
+/// The cargo target directory the tests run from (`target/<profile>/deps/install-…`), so
+/// the script is exercised through `CARGO_TARGET_DIR` rather than its default. The script
+/// installs `release/m3g` from there: the workspace's `cargo test` builds it with the
+/// `m3g-cli` tests; a run of this package alone builds it here.
 fn target_dir() -> PathBuf {
-    Path::new(env!("CARGO_BIN_EXE_m3g"))
-        .ancestors()
-        .nth(2)
-        .expect("target dir")
-        .to_path_buf()
+    let exe = std::env::current_exe().expect("current_exe");
+    let target = exe.ancestors().nth(3).expect("target dir").to_path_buf();
+    if !target.join("release/m3g").exists() {
+        run(Command::new(env!("CARGO"))
+            .args(["build", "--release", "-p", "m3g-cli", "--bin", "m3g"])
+            .current_dir(MANIFEST_DIR)
+            .env("CARGO_TARGET_DIR", &target));
+    }
+    target
 }
 
 fn install(destdir: &Path, extra_env: &[(&str, &str)], args: &[&str]) -> String {

@@ -4,16 +4,16 @@
 //! precision measurement (issue 10, item 4).
 
 use glam::{Mat4, Vec3, Vec4};
-use proptest::prelude::*;
-use GLES_CM::core::vertex::ClipVertex;
-use GLES_CM::core::{self, clip, fixed};
-use GLES_CM::core::{
+use gles_cm_core::vertex::ClipVertex;
+use gles_cm_core::{clip, fixed};
+use gles_cm_core::{
     AttribArray, ColorFormat, ComponentType, DepthFormat, DrawCall, Indices, Primitive,
     RenderState, Target, TargetFormat,
 };
-use GLES_CM::m3g::{KeyframeSequence as KS, Transform};
+use m3g::{KeyframeSequence as KS, Transform};
+use proptest::prelude::*;
 
-#[path = "../src/bin/accuracy/depth.rs"]
+#[path = "../crates/tools/src/bin/accuracy/depth.rs"]
 mod depth;
 use depth::{ideal_separation, measured_separation};
 
@@ -72,7 +72,7 @@ proptest! {
     /// Clipping: every output vertex lies inside the near/far planes and the guard band,
     /// with w > 0, and the clipped polygon's window-space area equals the area of the part
     /// of the triangle inside the viewport (measured by the f64 reference's clipper through
-    /// an exact-integer sampling of coverage in `core::reference`).
+    /// an exact-integer sampling of coverage in `gles_cm_core::reference`).
     #[test]
     fn clipping_stays_inside_and_keeps_area(v in prop::array::uniform12(-20.0f32..20.0)) {
         let vs: Vec<ClipVertex> = (0..3)
@@ -105,11 +105,11 @@ proptest! {
     #[test]
     fn edge_functions_do_not_overflow(v in prop::array::uniform9(-9.0f32..9.0)) {
         let mut s = RenderState::new(64, 64);
-        s.viewport = core::Viewport { x: -4064, y: -4064, width: 8192, height: 8192 };
+        s.viewport = gles_cm_core::Viewport { x: -4064, y: -4064, width: 8192, height: 8192 };
         let b: Vec<u8> = v.iter().flat_map(|f| f.to_ne_bytes()).collect();
         let d = DrawCall::new(Primitive::Triangles, Indices::Range { first: 0, count: 3 }, AttribArray { data: &b, ty: ComponentType::Float, size: 3, stride: 12, normalized: false });
         let mut t = Target::new(64, 64, TargetFormat { color: ColorFormat::Rgba8888, depth: None, stencil_bits: 0 });
-        core::render(&s, &d, &mut t).unwrap();
+        gles_cm_core::render(&s, &d, &mut t).unwrap();
     }
 
     /// SLERP between keys 0° to 1e-3° apart and near 180° apart: finite, unit length, on

@@ -6,8 +6,8 @@
 mod render;
 
 use libfuzzer_sys::fuzz_target;
-use GLES_CM::m3g::loader::Loader;
-use GLES_CM::m3g::writer::save;
+use m3g::loader::Loader;
+use m3g::writer::save;
 
 fuzz_target!(|data: &[u8]| {
     // Below the fuzzer's 512 MiB allocation limit, so that the budget, not the fuzzer,

@@ -9,7 +9,7 @@
 mod render;
 
 use libfuzzer_sys::fuzz_target;
-use GLES_CM::m3g::loader::{Loader, MemoryFileSystem};
+use m3g::loader::{Loader, MemoryFileSystem};
 
 const NAMES: [&str; 6] = [
     "/d/0.m3g",

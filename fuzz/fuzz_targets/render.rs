@@ -2,9 +2,9 @@
 //! that hostile content reaches animation, light collection, culling, deformation and the
 //! rasterizer. Every result must be `Ok` or an error, never a panic, hang or abort.
 
-use GLES_CM::core::{ColorFormat, DepthFormat, Target, TargetFormat};
-use GLES_CM::m3g::loader::{render_roots, RenderTarget};
-use GLES_CM::m3g::{Camera, Graphics3D, Node, Object3D, Object3DExt, TransformableExt};
+use m3g::loader::{render_roots, RenderTarget};
+use m3g::{Camera, Graphics3D, Node, Object3D, Object3DExt, TransformableExt};
+use m3g::{ColorFormat, DepthFormat, Target, TargetFormat};
 
 /// Renders the first World (at two times, so animation runs) and each root node with a
 /// default camera, into 16 × 16 targets.

@@ -14,7 +14,7 @@ use std::sync::{Mutex, OnceLock};
 
 use super::surface::Surface;
 use super::thread;
-use crate::core::target::ColorFormat;
+use gles_cm_core::target::ColorFormat;
 
 struct Settings {
     dir: PathBuf,

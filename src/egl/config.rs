@@ -2,13 +2,13 @@
 //! {0, 16, 24} × stencil {0, 8} × samples {0, 4}, their attributes (EGL 1.4 table 3.1), and
 //! `eglChooseConfig`'s matching and sorting rules (section 3.4.1, table 3.4). Ids 1–18 are
 //! the single-sample configs, 19–36 the same list with `EGL_SAMPLE_BUFFERS` 1 and
-//! `EGL_SAMPLES` 4 ([`crate::core::multisample`]); the sort puts fewer samples first, so a
+//! `EGL_SAMPLES` 4 ([`gles_cm_core::multisample`]); the sort puts fewer samples first, so a
 //! program that does not ask for samples gets a single-sample config.
 #![forbid(unsafe_code)]
 
 use std::cmp::Ordering;
 
-use crate::core::{ColorFormat, DepthFormat, TargetFormat};
+use gles_cm_core::{ColorFormat, DepthFormat, TargetFormat};
 
 use super::native::{
     EGL_MEMORY_BGRA8888, EGL_MEMORY_RGB565, EGL_MEMORY_RGB888, EGL_MEMORY_RGBA8888,
@@ -35,7 +35,7 @@ pub struct Config {
     pub color: ColorFormat,
     pub depth: Option<DepthFormat>,
     pub stencil: EGLint,
-    /// EGL_SAMPLES: 0, or [`crate::core::multisample::SAMPLES`] (with one sample buffer).
+    /// EGL_SAMPLES: 0, or [`gles_cm_core::multisample::SAMPLES`] (with one sample buffer).
     pub samples: EGLint,
 }
 
@@ -51,7 +51,7 @@ pub fn all() -> &'static [Config] {
     static CONFIGS: std::sync::OnceLock<Vec<Config>> = std::sync::OnceLock::new();
     CONFIGS.get_or_init(|| {
         let mut v = Vec::new();
-        for samples in [0, crate::core::multisample::SAMPLES as EGLint] {
+        for samples in [0, gles_cm_core::multisample::SAMPLES as EGLint] {
             for color in COLORS {
                 for depth in DEPTHS {
                     for stencil in [0, 8] {

@@ -12,7 +12,7 @@
 //! (`build.rs`).
 //!
 //! Like `ffi`, this is a boundary module: `unsafe` only where glvnd's pointers are read or
-//! written, every callback runs through [`crate::boundary::catch`].
+//! written, every callback runs through `crate::boundary::catch`.
 
 use std::ffi::{c_char, c_int, c_void, CStr};
 use std::ptr::{self, addr_of_mut};

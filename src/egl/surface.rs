@@ -7,7 +7,7 @@
 
 use std::sync::{Mutex, MutexGuard};
 
-use crate::core::{ColorFormat, Target};
+use gles_cm_core::{ColorFormat, Target};
 
 use super::config::{self, Config, MAX_PBUFFER_PIXELS, MAX_PBUFFER_SIDE};
 use super::native::{
@@ -124,9 +124,9 @@ pub fn read_from_memory(target: &mut Target, layout: MemoryLayout, bytes: &[u8])
                 EGL_MEMORY_RGB565 => {
                     let v = u16::from_ne_bytes([inp[0], inp[1]]) as u32;
                     [
-                        crate::core::target::expand_to_8(v >> 11, 5),
-                        crate::core::target::expand_to_8((v >> 5) & 63, 6),
-                        crate::core::target::expand_to_8(v & 31, 5),
+                        gles_cm_core::target::expand_to_8(v >> 11, 5),
+                        gles_cm_core::target::expand_to_8((v >> 5) & 63, 6),
+                        gles_cm_core::target::expand_to_8(v & 31, 5),
                         255,
                     ]
                 }

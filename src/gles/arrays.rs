@@ -1,7 +1,7 @@
 //! Client vertex arrays, the current vertex values, and the draw calls that read them.
 #![forbid(unsafe_code)]
 
-use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
+use gles_cm_core::{AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
 use super::buffer::lock_objects;
 use super::context::{Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
@@ -307,8 +307,8 @@ impl Context {
         call.point_size = point_size;
         call.matrix_index = matrix_index;
         call.weight = weight;
-        let recorded =
-            self.with_frame(|frame, target| core::record_into(&state, &call, frame, target));
+        let recorded = self
+            .with_frame(|frame, target| gles_cm_core::record_into(&state, &call, frame, target));
         if let Some(Err(_)) = recorded {
             self.set_error(GL_OUT_OF_MEMORY);
         }

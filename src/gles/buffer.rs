@@ -427,12 +427,12 @@ mod context_tests {
     use std::sync::{Arc, Mutex};
 
     use super::lock_objects;
-    use crate::core::{ColorFormat, Target, TargetFormat};
     use crate::gles::arrays::ArrayKind;
     use crate::gles::context::{Context, Surface};
     use crate::gles::ffi::ClientPtr;
     use crate::gles::tokens::*;
     use crate::gles::tokens_ext::*;
+    use gles_cm_core::{ColorFormat, Target, TargetFormat};
 
     struct Memory(Mutex<Target>);
 

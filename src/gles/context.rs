@@ -7,8 +7,8 @@ use std::sync::{Arc, Mutex, MutexGuard};
 
 use glam::Mat4;
 
-use crate::core::state::Quality;
-use crate::core::{
+use gles_cm_core::state::Quality;
+use gles_cm_core::{
     CompareFunc, CullFace, Frame, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport,
     Winding,
 };
@@ -46,7 +46,7 @@ pub struct SharedObjects {
     pub labels: std::collections::HashMap<(GLenum, GLuint), String>,
 }
 
-pub const MAX_TEXTURE_UNITS: usize = crate::core::TEXTURE_UNITS;
+pub const MAX_TEXTURE_UNITS: usize = gles_cm_core::TEXTURE_UNITS;
 pub const MAX_LIGHTS: usize = 8;
 pub const MAX_CLIP_PLANES: usize = 6;
 pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
@@ -330,7 +330,7 @@ impl Context {
 
     /// Runs `f` with the frame that records work for the draw surface (created to fit it)
     /// and the surface's target, locked for the call so that a draw can rasterize whenever
-    /// the frame fills ([`crate::core::record_into`]). A full frame is flushed first. `None`
+    /// the frame fills ([`gles_cm_core::record_into`]). A full frame is flushed first. `None`
     /// without a draw surface.
     pub(super) fn with_frame<R>(
         &mut self,
@@ -408,8 +408,8 @@ impl Context {
     /// The vertex-stage part of the core's state: lighting, normal processing, user clip
     /// planes, texture matrices, point parameters and the matrix palette.
     fn geometry_render_state(&self, rs: &mut RenderState) {
-        use crate::core::state;
         use glam::{Vec3, Vec4};
+        use gles_cm_core::state;
         let e = &self.enables;
         let l = &self.lighting;
         rs.lighting = e.lighting.then(|| {

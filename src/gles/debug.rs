@@ -3,7 +3,7 @@
 //!
 //! Every GL error the library records also becomes a message (source API, type ERROR,
 //! severity HIGH, the error code as its id) that says in words which call failed and why:
-//! the entry point's name comes from the C boundary ([`Context::call`]), the argument, its
+//! the entry point's name comes from the C boundary (`Context::call`), the argument, its
 //! value and the broken rule from the validation that failed ([`Why`]). Nothing is formatted
 //! unless debug output is enabled and the message passes message control.
 //!

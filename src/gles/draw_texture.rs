@@ -12,7 +12,7 @@
 
 use glam::{Mat4, Vec3};
 
-use crate::core::{self, AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
+use gles_cm_core::{AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
 
 use super::buffer::lock_objects;
 use super::context::{Context, MAX_TEXTURE_UNITS};
@@ -61,7 +61,7 @@ impl Context {
         }
         let mut rs = self.render_state();
         let (vw, vh) = ((b.x1 - b.x0) as f64, (b.y1 - b.y0) as f64);
-        rs.viewport = core::Viewport {
+        rs.viewport = gles_cm_core::Viewport {
             x: b.x0,
             y: b.y0,
             width: b.x1 - b.x0,
@@ -76,8 +76,8 @@ impl Context {
         rs.matrix_palette = None;
         rs.clip_planes.clear();
         rs.cull = None;
-        rs.texture_matrices = [Mat4::IDENTITY; core::TEXTURE_UNITS];
-        rs.texgen = [None; core::TEXTURE_UNITS];
+        rs.texture_matrices = [Mat4::IDENTITY; gles_cm_core::TEXTURE_UNITS];
+        rs.texgen = [None; gles_cm_core::TEXTURE_UNITS];
         let corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)];
         let ndc = |(cx, cy): (f64, f64)| {
             [
@@ -135,7 +135,7 @@ impl Context {
             }
         }
         if let Some(Err(_)) =
-            self.with_frame(|frame, target| core::record_into(&rs, &call, frame, target))
+            self.with_frame(|frame, target| gles_cm_core::record_into(&rs, &call, frame, target))
         {
             self.set_error(GL_OUT_OF_MEMORY);
         }

@@ -23,9 +23,9 @@ use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
-use crate::core::target::try_filled;
-use crate::core::texture::{BaseFormat, Image, Texture, MAX_LEVEL, MAX_TEXTURE_SIZE};
-use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
+use gles_cm_core::target::try_filled;
+use gles_cm_core::texture::{BaseFormat, Image, Texture, MAX_LEVEL, MAX_TEXTURE_SIZE};
+use gles_cm_core::{ColorFormat, DepthFormat, Target, TargetFormat};
 
 use super::buffer::lock_objects;
 use super::context::{Context, SharedObjects, Surface};

@@ -1,8 +1,8 @@
 //! Whole-framebuffer operations: clears and pixel read-back.
 #![forbid(unsafe_code)]
 
-use crate::core::target::keep_mask;
-use crate::core::{ColorFormat, Target};
+use gles_cm_core::target::keep_mask;
+use gles_cm_core::{ColorFormat, Target};
 
 use super::context::{lock_target, Context};
 use super::tokens::*;

@@ -4,7 +4,7 @@
 //! the four getters only convert, with the specification's rules (ES 1.1 §6.1.2).
 #![forbid(unsafe_code)]
 
-use crate::core::{fixed, MAX_VIEWPORT_DIM, SUBPIXEL_BITS};
+use gles_cm_core::{fixed, MAX_VIEWPORT_DIM, SUBPIXEL_BITS};
 
 use super::context::*;
 use super::tokens::*;
@@ -28,7 +28,7 @@ pub enum Kind {
 /// a matrix (16).
 pub(crate) const MAX_VALUES: usize = 24;
 
-/// Up to [`MAX_VALUES`] values of one kind.
+/// Up to `MAX_VALUES` values of one kind.
 #[derive(Clone, Copy, Debug)]
 pub struct Value {
     pub kind: Kind,
@@ -252,17 +252,17 @@ impl Context {
             GL_STENCIL_WRITEMASK => Value::int(self.stencil_writemask as i32 as i64),
             GL_DEPTH_FUNC => Value::int(compare_func_enum(self.depth_func) as i64),
             GL_CULL_FACE_MODE => Value::int(match self.cull_face {
-                crate::core::CullFace::Front => GL_FRONT,
-                crate::core::CullFace::Back => GL_BACK,
-                crate::core::CullFace::FrontAndBack => GL_FRONT_AND_BACK,
+                gles_cm_core::CullFace::Front => GL_FRONT,
+                gles_cm_core::CullFace::Back => GL_BACK,
+                gles_cm_core::CullFace::FrontAndBack => GL_FRONT_AND_BACK,
             } as i64),
             GL_FRONT_FACE => Value::int(match self.front_face {
-                crate::core::Winding::Ccw => GL_CCW,
-                crate::core::Winding::Cw => GL_CW,
+                gles_cm_core::Winding::Ccw => GL_CCW,
+                gles_cm_core::Winding::Cw => GL_CW,
             } as i64),
             GL_SHADE_MODEL => Value::int(match self.shade_model {
-                crate::core::ShadeModel::Flat => GL_FLAT,
-                crate::core::ShadeModel::Smooth => GL_SMOOTH,
+                gles_cm_core::ShadeModel::Flat => GL_FLAT,
+                gles_cm_core::ShadeModel::Smooth => GL_SMOOTH,
             } as i64),
             GL_MATRIX_MODE => Value::int(match self.matrix_mode {
                 MatrixMode::Modelview => GL_MODELVIEW,
@@ -306,10 +306,10 @@ impl Context {
             }
             GL_SUBPIXEL_BITS => Value::int(SUBPIXEL_BITS as i64),
             super::tokens_ext::GL_MAX_TEXTURE_LOD_BIAS_EXT => {
-                Value::floats(&[crate::core::texture::MAX_LOD_BIAS])
+                Value::floats(&[gles_cm_core::texture::MAX_LOD_BIAS])
             }
             super::tokens_ext::GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT => {
-                Value::floats(&[crate::core::texture::MAX_ANISOTROPY])
+                Value::floats(&[gles_cm_core::texture::MAX_ANISOTROPY])
             }
             // The draw surface's (framebuffer objects are single-sample).
             GL_SAMPLE_BUFFERS => Value::int((self.draw_samples() > 0) as i64),

@@ -62,7 +62,7 @@ impl Context {
                 f *= 0.5;
                 e += 1;
             }
-            mant[i] = crate::core::fixed::from_f32(f as f32);
+            mant[i] = gles_cm_core::fixed::from_f32(f as f32);
             exp[i] = e;
         }
         (mant, exp, status)

@@ -3,11 +3,11 @@
 //!
 //! Setters receive their values untouched as [`Params`]; each state area asks for a value in
 //! the form its parameter has: a number, an enumerant or a color component. Fixed-point
-//! arguments are converted with `core::fixed` (ARCHITECTURE decision 1), except enumerants,
+//! arguments are converted with `gles_cm_core::fixed` (ARCHITECTURE decision 1), except enumerants,
 //! which the `x` commands pass unconverted.
 #![forbid(unsafe_code)]
 
-use crate::core::fixed;
+use gles_cm_core::fixed;
 
 use super::get::{Kind, Value};
 use super::types::*;

@@ -3,10 +3,10 @@
 //! [`RenderState`]. Sample coverage has no effect: no config has sample buffers.
 #![forbid(unsafe_code)]
 
-use crate::core::state::{
+use gles_cm_core::state::{
     AlphaTest, Blend, BlendEquation, BlendFactor, LogicOp, PolygonOffset, StencilOp, StencilTest,
 };
-use crate::core::{CompareFunc, RenderState};
+use gles_cm_core::{CompareFunc, RenderState};
 
 use super::context::{compare_func, compare_func_enum, Context};
 use super::get::Value;
@@ -336,7 +336,7 @@ impl Context {
             units: s.polygon_offset_units,
             clamp: s.polygon_offset_clamp,
         });
-        rs.multisample = crate::core::multisample::Multisample {
+        rs.multisample = gles_cm_core::multisample::Multisample {
             enabled: e.multisample,
             coverage: e
                 .sample_coverage

@@ -3,7 +3,7 @@
 //! leaves the state untouched on error.
 #![forbid(unsafe_code)]
 
-use crate::core::{CullFace, Rect, ShadeModel, Winding, MAX_VIEWPORT_DIM};
+use gles_cm_core::{CullFace, Rect, ShadeModel, Winding, MAX_VIEWPORT_DIM};
 
 use super::context::{compare_func, Context};
 use super::tokens::*;
@@ -131,7 +131,7 @@ impl Context {
             );
         }
         let max = MAX_VIEWPORT_DIM as i32;
-        self.viewport = crate::core::Viewport {
+        self.viewport = gles_cm_core::Viewport {
             x,
             y,
             width: w.min(max),

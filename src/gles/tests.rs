@@ -4,7 +4,7 @@
 
 use std::sync::{Arc, Mutex};
 
-use crate::core::{ColorFormat, DepthFormat, Target, TargetFormat};
+use gles_cm_core::{ColorFormat, DepthFormat, Target, TargetFormat};
 
 use super::context::{Context, Surface};
 use super::tokens::*;

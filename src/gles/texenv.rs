@@ -2,9 +2,9 @@
 //! sprite coordinate replacement (OES_point_sprite). Not part of any texture object.
 #![forbid(unsafe_code)]
 
-use crate::core::state::{Quality, TexGen};
-use crate::core::texenv as core_env;
-use crate::core::RenderState;
+use gles_cm_core::state::{Quality, TexGen};
+use gles_cm_core::texenv as core_env;
+use gles_cm_core::RenderState;
 
 use super::context::{Context, MAX_TEXTURE_UNITS};
 use super::get::Value;

@@ -1,9 +1,9 @@
 //! Texture objects (ES 1.1 §3.7): names, bindings, parameters and image specification,
 //! including `OES_compressed_paletted_texture`, copies from the read surface and the hooks
 //! `eglBindTexImage` / `eglReleaseTexImage` use. The objects themselves and their data are
-//! [`crate::core::texture`]; this module validates and converts GL arguments.
+//! [`gles_cm_core::texture`]; this module validates and converts GL arguments.
 //!
-//! Named textures live in the share group's [`SharedObjects`]; texture 0 (the default
+//! Named textures live in the share group's [`SharedObjects`](super::context::SharedObjects); texture 0 (the default
 //! texture) belongs to each context. A name deleted in another context of the share group
 //! while bound here is recreated, empty, the next time this context uses the binding.
 //!
@@ -13,14 +13,14 @@
 //! [`Texture::version`] changes with each change, for caches that want to notice.
 #![forbid(unsafe_code)]
 
-use crate::core::fixed;
-use crate::core::texture::pvrtc::PvrtcFormat;
-use crate::core::texture::s3tc::S3tcFormat;
-use crate::core::texture::{
+use gles_cm_core::fixed;
+use gles_cm_core::texture::pvrtc::PvrtcFormat;
+use gles_cm_core::texture::s3tc::S3tcFormat;
+use gles_cm_core::texture::{
     convert_word, BaseFormat, Image, MagFilter, MinFilter, PaletteEntry, PaletteFormat, PixelRect,
     PixelType, Texture, Wrap, MAX_LEVEL, MAX_TEXTURE_SIZE,
 };
-use crate::core::{ColorFormat, Target};
+use gles_cm_core::{ColorFormat, Target};
 
 use super::buffer::lock_objects;
 use super::context::{lock_target, Context, MAX_TEXTURE_UNITS};
@@ -58,7 +58,7 @@ pub struct TextureUnits {
 #[derive(Debug)]
 struct Snapshot {
     key: (u64, bool, u32),
-    sampler: Option<std::sync::Arc<crate::core::texture::Sampler>>,
+    sampler: Option<std::sync::Arc<gles_cm_core::texture::Sampler>>,
 }
 
 /// How many values `glTexGen*vOES` reads for `coord` and `pname` (`None`: invalid names).
@@ -176,7 +176,7 @@ impl SizedFormat {
     /// Rounds texels to the format's precision (nothing for the 8-bit formats).
     fn store(&self, texels: &mut [u32]) {
         if self.bits != [8; 4] {
-            crate::core::texture::requantize(texels, self.bits);
+            gles_cm_core::texture::requantize(texels, self.bits);
         }
     }
 }
@@ -410,7 +410,7 @@ impl Context {
         unit: usize,
         cube: bool,
         bias: f32,
-    ) -> Option<std::sync::Arc<crate::core::texture::Sampler>> {
+    ) -> Option<std::sync::Arc<gles_cm_core::texture::Sampler>> {
         let (bound, default) = if cube {
             (&self.textures.bound_cube[unit], &self.textures.default_cube)
         } else {
@@ -787,7 +787,7 @@ impl Context {
         let (w, h) = (up.rect.width as u32, up.rect.height as u32);
         let image = match pixels {
             Some(p) => {
-                crate::core::texture::unpack(up.format, up.ty, up.rect, p).map(|texels| Image {
+                gles_cm_core::texture::unpack(up.format, up.ty, up.rect, p).map(|texels| Image {
                     width: w,
                     height: h,
                     format: up.format,
@@ -874,7 +874,7 @@ impl Context {
     }
 
     pub fn tex_sub_image_2d(&mut self, up: TexUpload, pixels: &[u8]) {
-        let Some(texels) = crate::core::texture::unpack(up.format, up.ty, up.rect, pixels) else {
+        let Some(texels) = gles_cm_core::texture::unpack(up.format, up.ty, up.rect, pixels) else {
             return self.set_error(GL_OUT_OF_MEMORY);
         };
         let (w, h) = (up.rect.width as u32, up.rect.height as u32);
@@ -925,7 +925,7 @@ impl Context {
             if !valid_image_size(level, width, height) || border != 0 || image_size < 0 {
                 return Err(GL_INVALID_VALUE);
             }
-            let size = crate::core::texture::etc1_size(width as u32, height as u32);
+            let size = gles_cm_core::texture::etc1_size(width as u32, height as u32);
             if image_size as usize != size {
                 return Err(GL_INVALID_VALUE);
             }
@@ -1005,7 +1005,7 @@ impl Context {
                 return self.paletted_tex_image_2d(face, f, levels, w, h, data)
             }
             Compressed::Etc1 => single(
-                data.and_then(|d| crate::core::texture::decode_etc1(w, h, d)),
+                data.and_then(|d| gles_cm_core::texture::decode_etc1(w, h, d)),
                 BaseFormat::Rgb,
             ),
             Compressed::Pvrtc(f) => single(data.and_then(|d| f.decode(w, h, d)), f.base_format()),
@@ -1123,7 +1123,7 @@ impl Context {
                 f.image_size(w, h)
             }
             Compressed::S3tc(f) => f.image_size(w, h),
-            _ => crate::core::texture::etc1_size(w, h),
+            _ => gles_cm_core::texture::etc1_size(w, h),
         };
         if !matches!(kind, Compressed::Pvrtc(_)) {
             let fits = |o: i64, n: i64, edge: i64| o % 4 == 0 && (n % 4 == 0 || o + n == edge);
@@ -1156,7 +1156,7 @@ impl Context {
         let decoded = match up.kind {
             Compressed::Pvrtc(f) => f.decode(w, h, data),
             Compressed::S3tc(f) => f.decode(w, h, data),
-            _ => crate::core::texture::decode_etc1(w, h, data),
+            _ => gles_cm_core::texture::decode_etc1(w, h, data),
         };
         let Some(image) = decoded else {
             return;

@@ -1,11 +1,11 @@
 //! Vertex arrays, current values and draw calls.
 
-use crate::core::fixed::to_f32 as fx;
-use crate::core::Indices;
 use crate::gles::arrays::ArrayKind;
 use crate::gles::context::Context;
 use crate::gles::tokens::*;
 use crate::gles::types::*;
+use gles_cm_core::fixed::to_f32 as fx;
+use gles_cm_core::Indices;
 
 use super::{client_bytes, client_ptr, read_slice, with_context, write_values};
 

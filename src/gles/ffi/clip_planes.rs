@@ -1,7 +1,7 @@
 //! User clip planes.
 
-use crate::core::fixed::{from_f32, to_f32 as fx};
 use crate::gles::types::*;
+use gles_cm_core::fixed::{from_f32, to_f32 as fx};
 
 use crate::gles::clip_planes::clip_plane_count;
 

@@ -1,9 +1,9 @@
 //! Current normal and texture coordinates, texture unit selection, the normal, texture
 //! coordinate and point size arrays, and `glGetPointerv`.
 
-use crate::core::fixed::to_f32 as fx;
 use crate::gles::arrays::ArrayKind;
 use crate::gles::types::*;
+use gles_cm_core::fixed::to_f32 as fx;
 
 use super::{client_ptr, with_context};
 

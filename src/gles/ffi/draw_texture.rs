@@ -1,7 +1,7 @@
 //! `OES_draw_texture`: screen-aligned textured rectangles.
 
-use crate::core::fixed;
 use crate::gles::types::*;
+use gles_cm_core::fixed;
 
 use super::{read_array, with_context};
 

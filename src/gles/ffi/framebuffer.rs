@@ -1,7 +1,7 @@
 //! Per-fragment and framebuffer state, clears and read-back.
 
-use crate::core::fixed::to_f32 as fx;
 use crate::gles::types::*;
+use gles_cm_core::fixed::to_f32 as fx;
 
 use super::with_context;
 

@@ -1,7 +1,7 @@
 //! The matrix stacks.
 
-use crate::core::fixed::to_f32 as fx;
 use crate::gles::types::*;
+use gles_cm_core::fixed::to_f32 as fx;
 
 use super::{read_array, with_context};
 

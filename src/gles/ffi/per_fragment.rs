@@ -1,8 +1,8 @@
 //! Per-fragment operations: alpha and stencil tests, blending, logic op, sample coverage,
 //! polygon offset.
 
-use crate::core::fixed::to_f32 as fx;
 use crate::gles::types::*;
+use gles_cm_core::fixed::to_f32 as fx;
 
 use super::with_context;
 

@@ -1,9 +1,9 @@
 //! Line widths, point sizes and point parameters.
 
-use crate::core::fixed::to_f32 as fx;
 use crate::gles::params::Params;
 use crate::gles::raster_state::point_parameter_count;
 use crate::gles::types::*;
+use gles_cm_core::fixed::to_f32 as fx;
 
 use super::{valid_params, with_context};
 

@@ -1,0 +1,266 @@
+//! The rendering core of `gles-cm` and `m3g`: plain Rust, no FFI types. Both of its users, the
+//! GL/EGL state machines of the C library and the M3G scene graph, describe what to draw as a [`RenderState`] plus a
+//! [`DrawCall`] and hand it to [`render`], which runs
+//! vertex → clip → setup → bin → raster → fragment into a [`Target`].
+#![forbid(unsafe_code)]
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+pub mod clip;
+pub mod fixed;
+pub mod fragment;
+pub mod frame;
+pub mod lanes;
+pub mod multisample;
+pub mod pool;
+pub mod quality;
+pub mod raster;
+pub mod reference;
+pub mod setup;
+pub mod state;
+pub mod target;
+pub mod texenv;
+pub mod texture;
+pub mod vertex;
+
+pub use frame::Frame;
+pub use state::{CompareFunc, CullFace, RenderState, ShadeModel, Viewport, Winding};
+pub use target::{ColorFormat, DepthFormat, Rect, Target, TargetFormat};
+pub use vertex::{AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
+
+/// Texture units (`GL_MAX_TEXTURE_UNITS`).
+pub const TEXTURE_UNITS: usize = 4;
+
+/// The subpixel precision of window coordinates: positions snap to 1/2⁸ pixel.
+pub const SUBPIXEL_BITS: u32 = 8;
+/// The largest viewport width and height. With [`SUBPIXEL_BITS`] and the guard band
+/// ([`clip::GUARD`]) it bounds every snapped coordinate the rasterizer sees below 2²⁴, so
+/// edge products stay far below 2⁶³.
+pub const MAX_VIEWPORT_DIM: u32 = 8192;
+
+/// The pipeline could not allocate memory for a draw call's vertices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OutOfMemory;
+
+/// Primitives a long draw call is cut into: each piece is transformed, set up and binned
+/// while its vertices and primitives are still in cache, and the frame may be flushed
+/// between pieces.
+const PIECE: usize = 2048;
+
+/// [`record_pieces`] for a multisampled target: the draw once per sample plane the sample
+/// coverage mask keeps, moved to the plane's sample position ([`multisample`]). A plane's
+/// frame is not flushed during the draw: a flush is for the whole frame, planes and resolve.
+fn record_samples(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    frame: &mut Frame,
+) -> Result<(), OutOfMemory> {
+    let mut plane_state = state.clone();
+    for (pass, plane) in state
+        .multisample
+        .passes()
+        .into_iter()
+        .zip(frame.planes_mut())
+    {
+        if let Some(pass) = pass {
+            plane_state.sample = Some(pass);
+            record_pieces(&plane_state, draw, plane, None)?;
+        }
+    }
+    Ok(())
+}
+
+/// Transforms, clips and sets up `draw` with `state`, recording its primitives in `frame`
+/// (for a target of `frame`'s size and format) for a later [`Frame::flush_into`]. The frame
+/// grows with the draw: for draws of any size, [`record_into`] bounds it.
+pub fn record(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    frame: &mut Frame,
+) -> Result<(), OutOfMemory> {
+    record_pieces(state, draw, frame, None)
+}
+
+/// [`record`] for the frame bound to `target`, rasterizing into `target` whenever the frame
+/// is full between pieces of the draw, so a draw of any size rasterizes from a working set
+/// that fits in cache. With several threads ([`pool::thread_count`]), consecutive pieces
+/// are transformed and set up in parallel and binned in order, so the frame is the same as
+/// with one.
+pub fn record_into(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    frame: &mut Frame,
+    target: &mut Target,
+) -> Result<(), OutOfMemory> {
+    record_pieces(state, draw, frame, Some(target))
+}
+
+/// [`record`] and [`record_into`]: without a target the frame is never flushed.
+fn record_pieces(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    frame: &mut Frame,
+    mut target: Option<&mut Target>,
+) -> Result<(), OutOfMemory> {
+    let bounds = state.pixel_bounds(frame.bounds());
+    if bounds.is_empty() {
+        return Ok(());
+    }
+    if !frame.planes_mut().is_empty() {
+        return record_samples(state, draw, frame);
+    }
+    let fragment = fragment::FragmentKey::new(state, frame.format());
+    let mut key = frame.key(fragment.clone());
+    // A flush forgets the frame's keys: the piece after it registers this one again.
+    let mut make_room = |frame: &mut Frame, key: &mut u32| {
+        if frame.is_full() {
+            if let Some(t) = target.as_deref_mut() {
+                frame.flush_into(t);
+            }
+            *key = frame.key(fragment.clone());
+        }
+    };
+    let depth = frame.format().depth;
+    let pieces = pieces(draw);
+    let threads = pool::thread_count().min(pieces.len());
+    if threads <= 1 {
+        return record_serially(state, &pieces, frame, &mut make_room, key, bounds, depth);
+    }
+    let collect = |piece: &DrawCall<'_>| {
+        let mut prims = Vec::with_capacity(piece.indices.len());
+        set_up(state, piece, bounds, depth, &mut |p| prims.push(p)).map(|()| prims)
+    };
+    for batch in pieces.chunks(threads) {
+        // Each piece's primitives land in its own slot, binned below in piece order.
+        type Slot = Mutex<Option<Result<Vec<raster::Prim>, OutOfMemory>>>;
+        let slots: Vec<Slot> = batch.iter().map(|_| Mutex::new(None)).collect();
+        let next = AtomicUsize::new(0);
+        pool::together(threads, || loop {
+            let k = next.fetch_add(1, Ordering::Relaxed);
+            let Some(piece) = batch.get(k) else { break };
+            let prims = collect(piece);
+            *slots[k].lock().unwrap_or_else(|e| e.into_inner()) = Some(prims);
+        });
+        for slot in slots {
+            make_room(frame, &mut key);
+            let piece = slot.into_inner().unwrap_or_else(|e| e.into_inner());
+            for p in piece.expect("every piece of the batch was set up")? {
+                frame.prim(p, key);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The pieces of a draw one after the other on the calling thread.
+#[allow(clippy::too_many_arguments)]
+fn record_serially(
+    state: &RenderState,
+    pieces: &[DrawCall<'_>],
+    frame: &mut Frame,
+    make_room: &mut dyn FnMut(&mut Frame, &mut u32),
+    mut key: u32,
+    bounds: Rect,
+    depth: Option<DepthFormat>,
+) -> Result<(), OutOfMemory> {
+    for piece in pieces {
+        make_room(frame, &mut key);
+        set_up(state, piece, bounds, depth, &mut |p| frame.prim(p, key))?;
+    }
+    Ok(())
+}
+
+/// `draw` cut into pieces of whole primitives. Strips overlap by two vertices and start at
+/// an even triangle, so winding and provoking vertices are unchanged; fans and loops stay
+/// whole.
+fn pieces<'a>(draw: &DrawCall<'a>) -> Vec<DrawCall<'a>> {
+    let n = draw.indices.len();
+    let (step, overlap) = match draw.primitive {
+        Primitive::Points => (PIECE, 0),
+        Primitive::Lines => (2 * PIECE, 0),
+        Primitive::LineStrip => (PIECE, 1),
+        Primitive::Triangles => (3 * PIECE, 0),
+        Primitive::TriangleStrip => (PIECE, 2),
+        Primitive::LineLoop | Primitive::TriangleFan => (n.max(1), 0),
+    };
+    let mut out = Vec::new();
+    let mut start = 0;
+    loop {
+        let end = (start + step + overlap).min(n);
+        out.push(DrawCall {
+            indices: draw.indices.sub(start, end),
+            ..*draw
+        });
+        start += step;
+        if end >= n {
+            return out;
+        }
+    }
+}
+
+/// Transforms, clips and sets up one piece, passing its primitives to `emit` in order.
+fn set_up(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    bounds: Rect,
+    depth: Option<DepthFormat>,
+    // Generic rather than `dyn`: inlined, a primitive can be built where it is stored
+    // instead of being copied (some 300 bytes) at each step.
+    emit: &mut impl FnMut(raster::Prim),
+) -> Result<(), OutOfMemory> {
+    let vertices = vertex::run(state, draw)?;
+    let user = state.clip_planes.len().min(clip::MAX_USER_PLANES);
+    let prim = draw.primitive;
+    if prim == Primitive::Points {
+        for k in 0..draw.indices.len() {
+            let v = &vertices[draw.indices.get(k)];
+            if clip::point(v, user) {
+                if let Some(p) = raster::point::setup(state, v, bounds) {
+                    emit(raster::Prim::Point(p));
+                }
+            }
+        }
+    } else if prim.is_line() {
+        prim.for_each_line(&draw.indices, |a, b| {
+            let (va, vb) = (&vertices[a], &vertices[b]);
+            if let Some((ca, cb)) = clip::line(va, vb, user) {
+                if let Some(l) = raster::line::setup(state, &ca, &cb, vb, bounds) {
+                    emit(raster::Prim::Line(l));
+                }
+            }
+        });
+    } else {
+        // Triangles are clipped to the guard band only: their pixels stop at the viewport.
+        let vp = state.viewport;
+        let bounds = bounds.intersect(Rect::new(vp.x, vp.y, vp.width, vp.height));
+        prim.for_each_triangle(&draw.indices, |a, b, c| {
+            let (a, b, c) = (&vertices[a], &vertices[b], &vertices[c]);
+            clip::triangle(a, b, c, user, |poly| {
+                // The clipped polygon is convex: fan it out from its first vertex.
+                for i in 1..poly.len() - 1 {
+                    let tri = [poly[0], poly[i], poly[i + 1]];
+                    if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
+                        emit(raster::Prim::Triangle(t));
+                    }
+                }
+            });
+        });
+    }
+    Ok(())
+}
+
+/// Draws `draw` with `state` into `target` and returns when every pixel is written.
+pub fn render(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    target: &mut Target,
+) -> Result<(), OutOfMemory> {
+    let mut frame = Frame::for_target(target);
+    record(state, draw, &mut frame)?;
+    frame.flush_into(target);
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,1116 @@
+//! One vertex through the vertex stage: skinning or the modelview, the projection, the
+//! normal transform (inverse transpose, rescale, normalize), lighting, texture coordinates
+//! (generated or fetched, then the texture matrix), the derived point size and the user
+//! clip distances. [`Stage::new`] derives everything that is constant over a draw call.
+
+use glam::{Mat3, Mat4, Vec3, Vec4};
+
+use super::lighting::Prepared;
+use super::MAX_USER_PLANES;
+use super::{AttribArray, AttribSource, ClipVertex, DrawCall, Indices, Primitive};
+use crate::lanes::{max_ps, min_ps, Lane, LANES};
+use crate::state::{RenderState, ShadeModel, TexGen};
+use crate::TEXTURE_UNITS;
+
+/// The matrix that takes object-space normals to eye space: the inverse transpose of the
+/// upper-left 3 × 3 of `m` (ES 1.1 §2.11.3). A singular matrix (a scale by 0, say) has no
+/// inverse; normals then pass through untransformed, so nothing becomes NaN or infinite
+/// (Mesa does the same).
+pub fn normal_matrix(m: &Mat4) -> Mat3 {
+    let m3 = Mat3::from_mat4(*m);
+    let det = m3.determinant();
+    if det == 0.0 || !det.is_finite() {
+        return Mat3::IDENTITY;
+    }
+    let n = m3.inverse().transpose();
+    if n.is_finite() {
+        n
+    } else {
+        Mat3::IDENTITY
+    }
+}
+
+/// `GL_RESCALE_NORMAL`'s factor for normal matrix `n`: 1 / the length of the third row of
+/// the inverse modelview (the third column of its transpose), which undoes a uniform scale.
+pub fn rescale_factor(n: &Mat3) -> f32 {
+    let len = n.z_axis.length();
+    if len > 0.0 && len.is_finite() {
+        1.0 / len
+    } else {
+        1.0
+    }
+}
+
+/// Where one unit's texture coordinates come from, with the texture matrix left out when
+/// it is the identity.
+#[derive(Clone, Copy)]
+enum TexSource<'d> {
+    /// The current value (no array, no texgen): the same for every vertex, so transformed
+    /// once per draw, which rounds exactly as transforming it per vertex.
+    Constant(Vec4),
+    Array(AttribArray<'d>, Option<Mat4>),
+    Gen(TexGen, Option<Mat4>),
+}
+
+pub(super) struct Stage<'s, 'd> {
+    state: &'s RenderState,
+    draw: &'d DrawCall<'d>,
+    modelview: Mat4,
+    projection: Mat4,
+    mvp: Mat4,
+    normal: Mat3,
+    rescale: f32,
+    lighting: Option<Prepared>,
+    /// The eye-space normal is needed (lighting or texgen).
+    need_normal: bool,
+    /// The eye-space position is needed (lighting, fog, user clip planes, texgen, point
+    /// attenuation); otherwise the clip position comes from one product and `eye` is 0.
+    need_eye: bool,
+    /// Per palette matrix: it and its normal matrix.
+    palette: Option<Vec<(Mat4, Mat3)>>,
+    tex: [TexSource<'d>; TEXTURE_UNITS],
+    points: bool,
+    attenuate: bool,
+    planes: usize,
+    two_side: bool,
+    /// [`write_lanes`](Self::write_lanes) applies: no skinning and no texgen.
+    pub batched: bool,
+    /// The texture coordinates of units whose are constant over the draw (the others
+    /// hold the default).
+    template_tex: [Vec4; TEXTURE_UNITS],
+    /// Some unit's coordinates are not constant.
+    tex_varies: bool,
+    /// Flat-shaded lit primitives where every vertex provokes at most one of them
+    /// (non-indexed triangles and lines), as (first vertex, vertices per primitive): only
+    /// vertex first + k·step + step − 1 is lit. Flat shading reads no other vertex's color
+    /// (clipping and setup take the color of the original provoking vertex), so the
+    /// pixels are the same as with every vertex lit.
+    pub provoking: Option<(usize, usize)>,
+    /// The batched path lights after transforming, only the vertices whose colors are
+    /// read (see [`Deferred`]).
+    pub deferred: Option<Deferred>,
+}
+
+/// Lighting after the positions are known, for lit non-indexed triangles and flat-shaded
+/// lit lines, where vertex `first + k` belongs to primitive `k / step` alone: only the
+/// vertices of triangles that clipping does not drop outright
+/// ([`rejects`](crate::vertex::rejects)), and of those only the provoking one under
+/// flat shading, are lit. No other vertex's color reaches a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Deferred {
+    pub first: usize,
+    /// Vertices per primitive: 3 (triangles) or 2 (lines).
+    pub step: usize,
+    /// Flat shading: only the last vertex of each primitive.
+    pub provoking_only: bool,
+}
+
+impl<'s, 'd> Stage<'s, 'd> {
+    pub fn new(state: &'s RenderState, draw: &'d DrawCall<'d>) -> Self {
+        let normal = normal_matrix(&state.modelview);
+        let lighting = state.lighting.as_ref().map(Prepared::new);
+        let two_side = state
+            .lighting
+            .as_ref()
+            .is_some_and(|l| l.two_side && !matches!(draw.primitive, Primitive::Points))
+            && !draw.primitive.is_line();
+        let batched = state.matrix_palette.is_none() && state.texgen.iter().all(Option::is_none);
+        let tex: [TexSource<'d>; TEXTURE_UNITS] = std::array::from_fn(|u| {
+            let m = state.texture_matrices[u];
+            let matrix = (m != Mat4::IDENTITY).then_some(m);
+            match (state.texgen[u], draw.texcoord[u]) {
+                (Some(g), _) => TexSource::Gen(g, matrix),
+                (None, AttribSource::Array(a)) => TexSource::Array(a, matrix),
+                (None, AttribSource::Constant(c)) => {
+                    let tc = Vec4::from_array(c);
+                    TexSource::Constant(matrix.map_or(tc, |m| m * tc))
+                }
+            }
+        });
+        let template_tex = tex.map(|src| match src {
+            TexSource::Constant(tc) => tc,
+            _ => Vec4::new(0.0, 0.0, 0.0, 1.0),
+        });
+        let tex_varies = tex.iter().any(|t| !matches!(t, TexSource::Constant(_)));
+        let flat = state.shade_model == ShadeModel::Flat;
+        let provoking = match (draw.primitive, draw.indices) {
+            _ if !flat || lighting.is_none() => None,
+            (Primitive::Triangles, Indices::Range { first, .. }) => Some((first, 3)),
+            (Primitive::Lines, Indices::Range { first, .. }) => Some((first, 2)),
+            _ => None,
+        };
+        let deferred = match (draw.primitive, draw.indices) {
+            _ if !batched || lighting.is_none() => None,
+            (Primitive::Triangles, Indices::Range { first, .. }) => Some(Deferred {
+                first,
+                step: 3,
+                provoking_only: flat,
+            }),
+            (Primitive::Lines, Indices::Range { first, .. }) if flat => Some(Deferred {
+                first,
+                step: 2,
+                provoking_only: true,
+            }),
+            _ => None,
+        };
+        Stage {
+            state,
+            draw,
+            modelview: state.modelview,
+            projection: state.projection,
+            mvp: state.projection * state.modelview,
+            normal,
+            rescale: if state.rescale_normal && !state.normalize {
+                rescale_factor(&normal)
+            } else {
+                1.0
+            },
+            need_normal: lighting.is_some() || state.texgen.iter().any(Option::is_some),
+            need_eye: lighting.is_some()
+                || state.fog.is_some()
+                || !state.clip_planes.is_empty()
+                || state.texgen.iter().any(Option::is_some)
+                || (draw.primitive == Primitive::Points
+                    && state.point_params.attenuation != [1.0, 0.0, 0.0]),
+            lighting,
+            palette: state
+                .matrix_palette
+                .as_ref()
+                .map(|p| p.iter().map(|m| (*m, normal_matrix(m))).collect()),
+            tex,
+            template_tex,
+            tex_varies,
+            points: draw.primitive == Primitive::Points,
+            attenuate: state.point_params.attenuation != [1.0, 0.0, 0.0],
+            planes: state.clip_planes.len().min(MAX_USER_PLANES),
+            two_side,
+            batched,
+            provoking,
+            deferred,
+        }
+    }
+
+    /// Eye-space position and (untransformed-length) eye-space normal of vertex `i`.
+    #[inline(always)]
+    fn to_eye(&self, i: usize, p: Vec4) -> (Vec4, Vec3) {
+        let n = || self.draw.normal.fetch_vec4(i).truncate();
+        let Some(palette) = &self.palette else {
+            let ne = if self.need_normal {
+                self.normal * n() * self.rescale
+            } else {
+                Vec3::ZERO
+            };
+            let eye = if self.need_eye {
+                self.modelview * p
+            } else {
+                Vec4::ZERO
+            };
+            return (eye, ne);
+        };
+        let (mut eye, mut ne) = (Vec4::ZERO, Vec3::ZERO);
+        let obj_n = if self.need_normal { n() } else { Vec3::ZERO };
+        for (index, weight) in palette_terms(self.draw, i) {
+            // An index past the palette contributes nothing.
+            if let Some((m, nm)) = palette.get(index) {
+                eye += (*m * p) * weight;
+                if self.need_normal {
+                    ne += (*nm * obj_n) * weight;
+                }
+            }
+        }
+        (eye, ne)
+    }
+
+    /// Runs vertex `i` into `out`, every field written (inlined into `fill`, which is
+    /// compiled per instruction set).
+    #[inline(always)]
+    pub fn write(&self, i: usize, out: &mut ClipVertex) {
+        let p = self.draw.position.fetch_vec4(i);
+        // The clip position does not depend on lighting or texgen being on (GL's
+        // invariance rule for multi-pass rendering): always the one product with the
+        // combined matrix, except when skinning.
+        let (eye, mut normal) = self.to_eye(i, p);
+        let pos = if self.palette.is_some() {
+            self.projection * eye
+        } else {
+            self.mvp * p
+        };
+        if self.need_normal && self.state.normalize {
+            // A zero-length normal stays zero: it lights nothing but ambient and emission,
+            // and never produces NaN.
+            normal = normal.normalize_or_zero();
+        }
+        let given = self.draw.color.fetch_vec4(i);
+        let (color, back_color) = match &self.lighting {
+            Some(l) if self.lit(i) => {
+                let front = l.shade(eye, normal, given, false);
+                let back = if self.two_side {
+                    l.shade(eye, -normal, given, true)
+                } else {
+                    front
+                };
+                (front, back)
+            }
+            _ => {
+                let c = clamp01(given);
+                (c, c)
+            }
+        };
+        self.finish(i, pos, color, back_color, eye, normal, out);
+    }
+
+    /// What follows the colors, for either path: texture coordinates, point size, clip
+    /// distances; then every field of `out` written.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn finish(
+        &self,
+        i: usize,
+        pos: Vec4,
+        color: Vec4,
+        back_color: Vec4,
+        eye: Vec4,
+        normal: Vec3,
+        out: &mut ClipVertex,
+    ) {
+        let mut tex = [Vec4::ZERO; TEXTURE_UNITS];
+        for (t, src) in tex.iter_mut().zip(&self.tex) {
+            let (tc, matrix) = match *src {
+                TexSource::Constant(tc) => {
+                    *t = tc;
+                    continue;
+                }
+                TexSource::Array(a, matrix) => (a.fetch_vec4(i), matrix),
+                TexSource::Gen(TexGen::NormalMap, matrix) => (normal.extend(1.0), matrix),
+                TexSource::Gen(TexGen::ReflectionMap, matrix) => {
+                    let e = eye.truncate().normalize_or_zero();
+                    let n = normal.normalize_or_zero();
+                    ((e - 2.0 * n * n.dot(e)).extend(1.0), matrix)
+                }
+            };
+            *t = matrix.map_or(tc, |m| m * tc);
+        }
+        let point_size = if self.points {
+            self.point_size(i, eye)
+        } else {
+            1.0
+        };
+        let mut clip_dist = [0.0; MAX_USER_PLANES];
+        for (d, plane) in clip_dist
+            .iter_mut()
+            .zip(&self.state.clip_planes[..self.planes])
+        {
+            // Kept finite and never NaN (an infinite eye position can give either), so the
+            // clipper's interpolation parameters stay in [0, 1]; NaN counts as outside.
+            let v = plane.dot(eye);
+            *d = if v.is_nan() {
+                -f32::MAX
+            } else {
+                v.clamp(-f32::MAX, f32::MAX)
+            };
+        }
+        // Field by field (the pattern is exhaustive, so a new field cannot be missed).
+        let ClipVertex {
+            pos: out_pos,
+            color: out_color,
+            back_color: out_back_color,
+            tex: out_tex,
+            eye: out_eye,
+            point_size: out_point_size,
+            clip_dist: out_clip_dist,
+        } = out;
+        *out_pos = pos;
+        *out_color = color;
+        *out_back_color = back_color;
+        *out_tex = tex;
+        *out_eye = eye.truncate();
+        *out_point_size = point_size;
+        *out_clip_dist = clip_dist;
+    }
+
+    /// Runs the vertices `idx` (`LANES` of them) into `out` (at most as many: lanes past
+    /// its end are computed and dropped), as [`write`](Self::write) would one by one and
+    /// bit for bit alike, with positions, normals and colors as structures of arrays so
+    /// transform, normalization and lighting vectorize across vertices. Only when
+    /// `batched`.
+    #[inline(always)]
+    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [ClipVertex], light: bool) {
+        let mut p = [[0.0; LANES]; 4];
+        self.draw.position.gather(idx, &mut p);
+        let pos = mat4_lanes(&self.mvp, &p);
+        let eye = if self.need_eye {
+            mat4_lanes(&self.modelview, &p)
+        } else {
+            [[0.0; LANES]; 4]
+        };
+        let (color, back_color) = self.colors_lanes(idx, light, self.need_eye.then_some(&eye));
+        // `out` holds `template()`: only what varies per vertex is written, component by
+        // component (assembling vectors from lanes costs more than the stores).
+        if self.points || self.planes > 0 {
+            for (k, v) in out.iter_mut().enumerate().take(LANES) {
+                self.finish(
+                    idx[k],
+                    lane4(&pos, k),
+                    lane4(&color, k),
+                    lane4(&back_color, k),
+                    lane4(&eye, k),
+                    // Only texgen reads the normal here, and with texgen nothing is batched.
+                    Vec3::ZERO,
+                    v,
+                );
+            }
+            return;
+        }
+        for (k, v) in out.iter_mut().enumerate().take(LANES) {
+            store_lane(&mut v.pos, &pos, k);
+            store_lane(&mut v.color, &color, k);
+            store_lane(&mut v.back_color, &back_color, k);
+            v.eye = Vec3::new(eye[0][k], eye[1][k], eye[2][k]);
+        }
+        if self.tex_varies {
+            // Without texgen (not batched) a unit that varies is an array.
+            for (u, src) in self.tex.iter().enumerate() {
+                if let TexSource::Array(a, matrix) = *src {
+                    let mut tc = [[0.0; LANES]; 4];
+                    a.gather(idx, &mut tc);
+                    if let Some(m) = matrix {
+                        tc = mat4_lanes(&m, &tc);
+                    }
+                    for (k, v) in out.iter_mut().enumerate().take(LANES) {
+                        store_lane(&mut v.tex[u], &tc, k);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The front and back colors of vertices `idx` for [`write_lanes`](Self::write_lanes):
+    /// lit when lighting is on and `light` (see [`lit`](Self::lit)), otherwise the given
+    /// colors clamped. `eye` holds their eye positions when the caller has them; they are
+    /// worked out here when a light needs them and it does not.
+    #[inline(always)]
+    pub fn colors_lanes(
+        &self,
+        idx: &[usize; LANES],
+        light: bool,
+        eye: Option<&[Lane<f32>; 4]>,
+    ) -> ([Lane<f32>; 4], [Lane<f32>; 4]) {
+        let mut given = [[0.0; LANES]; 4];
+        self.draw.color.gather(idx, &mut given);
+        let Some(l) = self.lighting.as_ref().filter(|_| light) else {
+            for v in given.iter_mut().flatten() {
+                *v = min_ps(max_ps(*v, 0.0), 1.0);
+            }
+            return (given, given);
+        };
+        // Batched, only lighting reads the normal (texgen is not batched).
+        let mut n = [[0.0; LANES]; 3];
+        self.draw.normal.gather(idx, &mut n);
+        let mut normal = [[0.0; LANES]; 3];
+        let m = self.normal.to_cols_array_2d();
+        for r in 0..3 {
+            for k in 0..LANES {
+                normal[r][k] =
+                    (m[0][r] * n[0][k] + m[1][r] * n[1][k] + m[2][r] * n[2][k]) * self.rescale;
+            }
+        }
+        if self.state.normalize {
+            normalize_lanes(&mut normal);
+        }
+        let computed;
+        let eye = match eye {
+            Some(eye) => eye,
+            None if l.reads_position() => {
+                let mut p = [[0.0; LANES]; 4];
+                self.draw.position.gather(idx, &mut p);
+                computed = mat4_lanes(&self.modelview, &p);
+                &computed
+            }
+            // Directional lights only: no position is read.
+            None => &[[0.0; LANES]; 4],
+        };
+        let front = l.shade_lanes(eye, &normal, &given, false);
+        let back = if self.two_side {
+            for v in normal.iter_mut().flatten() {
+                *v = -*v;
+            }
+            l.shade_lanes(eye, &normal, &given, true)
+        } else {
+            front
+        };
+        (front, back)
+    }
+
+    /// Whether vertex `i` is lit: always, except under [`provoking`](Self::provoking)
+    /// where only the provoking vertices are (the others' colors are never read).
+    #[inline(always)]
+    pub fn lit(&self, i: usize) -> bool {
+        match self.provoking {
+            None => true,
+            Some((first, step)) => i >= first && (i - first) % step == step - 1,
+        }
+    }
+
+    /// The vertex `fill` initializes the list with: the values that are the same for every
+    /// vertex of the draw where [`write_lanes`](Self::write_lanes) can skip them
+    /// (constant texture coordinates, no point size, no clip distances).
+    pub fn template(&self) -> ClipVertex {
+        let mut v = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
+        v.tex = self.template_tex;
+        v
+    }
+
+    /// ES 1.1 §3.3: the size (array or state) times sqrt(1 / (a + b·d + c·d²)), d the
+    /// distance from the eye, clamped to [min, max]. A denominator that is not positive
+    /// (the coefficients may be anything) is the limit from above: the size is `max`.
+    fn point_size(&self, i: usize, eye: Vec4) -> f32 {
+        let pp = &self.state.point_params;
+        let mut size = match &self.draw.point_size {
+            Some(a) => a.fetch(i)[0],
+            None => self.state.point_size,
+        };
+        if self.attenuate {
+            let d = eye.truncate().length();
+            let [a, b, c] = pp.attenuation;
+            let denom = a + b * d + c * d * d;
+            size = if denom > 0.0 {
+                size * (1.0 / denom).sqrt()
+            } else {
+                pp.size_max
+            };
+        }
+        // NaN (from a NaN size or distance) becomes the minimum.
+        let size = size.max(pp.size_min);
+        if size.is_nan() {
+            pp.size_min
+        } else {
+            size.min(pp.size_max)
+        }
+    }
+}
+
+/// The (palette index, weight) pairs of vertex `i` (see [`DrawCall::matrix_index`]).
+fn palette_terms(draw: &DrawCall<'_>, i: usize) -> impl Iterator<Item = (usize, f32)> {
+    let units = draw.weight.map_or(1, |w| w.size.clamp(1, 4));
+    let fetch = |a: &Option<AttribArray<'_>>| a.map(|a| (a.fetch(i), a.size));
+    let (idx, weights) = (fetch(&draw.matrix_index), fetch(&draw.weight));
+    (0..units).map(move |k| {
+        let index = match idx {
+            Some((v, size)) if k < size => v[k],
+            _ => 0.0,
+        };
+        let weight = match weights {
+            Some((v, _)) => v[k],
+            None => 1.0,
+        };
+        let index = if index >= 0.0 && index.is_finite() {
+            index as usize
+        } else {
+            usize::MAX
+        };
+        (index, weight)
+    })
+}
+
+#[inline(always)]
+fn store_lane(v: &mut Vec4, a: &[Lane<f32>; 4], k: usize) {
+    v.x = a[0][k];
+    v.y = a[1][k];
+    v.z = a[2][k];
+    v.w = a[3][k];
+}
+
+#[inline(always)]
+fn lane4(a: &[Lane<f32>; 4], k: usize) -> Vec4 {
+    Vec4::new(a[0][k], a[1][k], a[2][k], a[3][k])
+}
+
+/// `m · p` for each lane, in `Mat4 * Vec4`'s order: ((x·c₀ + y·c₁) + z·c₂) + w·c₃.
+#[inline(always)]
+fn mat4_lanes(m: &Mat4, p: &[Lane<f32>; 4]) -> [Lane<f32>; 4] {
+    let m = m.to_cols_array_2d();
+    let mut out = [[0.0; LANES]; 4];
+    for r in 0..4 {
+        for k in 0..LANES {
+            out[r][k] =
+                m[0][r] * p[0][k] + m[1][r] * p[1][k] + m[2][r] * p[2][k] + m[3][r] * p[3][k];
+        }
+    }
+    out
+}
+
+/// `Vec3::normalize_or_zero` for each lane, in its order: the reciprocal of the length,
+/// and zero where that is not finite and positive.
+#[inline(always)]
+fn normalize_lanes(v: &mut [Lane<f32>; 3]) {
+    for k in 0..LANES {
+        let len = (v[0][k] * v[0][k] + v[1][k] * v[1][k] + v[2][k] * v[2][k]).sqrt();
+        let rcp = 1.0 / len;
+        let ok = rcp.is_finite() && rcp > 0.0;
+        for axis in v.iter_mut() {
+            axis[k] = if ok { axis[k] * rcp } else { 0.0 };
+        }
+    }
+}
+
+#[inline]
+fn clamp01(c: Vec4) -> Vec4 {
+    // max/min rather than clamp: NaN becomes 0 instead of propagating.
+    c.max(Vec4::ZERO).min(Vec4::ONE)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{rejects, run, AttribSource, ComponentType, Indices};
+    use super::*;
+
+    fn draw<'a>(bytes: &'a [u8], prim: Primitive, count: usize) -> DrawCall<'a> {
+        DrawCall::new(
+            prim,
+            Indices::Range { first: 0, count },
+            AttribArray {
+                data: bytes,
+                ty: ComponentType::Float,
+                size: 3,
+                stride: 12,
+                normalized: false,
+            },
+        )
+    }
+
+    fn bytes(v: &[f32]) -> Vec<u8> {
+        v.iter().flat_map(|v| v.to_ne_bytes()).collect()
+    }
+
+    /// [`bits`] of vertex `i` of a draw of `n` vertices from `first` under `stage`, the
+    /// colors left out where deferred lighting leaves them unlit because no pixel reads
+    /// them (the batched path defers; the one-vertex path lights them).
+    fn read_bits(
+        stage: &Stage<'_, '_>,
+        v: &ClipVertex,
+        tri: [&ClipVertex; 3],
+        i: usize,
+        n: usize,
+    ) -> Vec<u32> {
+        let mut v = *v;
+        if let Some(d) = stage.deferred {
+            let k = i - d.first;
+            let whole = k < n / d.step * d.step;
+            let rejected = d.step == 3 && rejects(tri[0], tri[1], tri[2]);
+            if !whole || rejected {
+                v.color = Vec4::ZERO;
+                v.back_color = Vec4::ZERO;
+            }
+        }
+        bits(&v)
+    }
+
+    /// Every float of a vertex, as bits, for exact comparison (NaN included).
+    fn bits(v: &ClipVertex) -> Vec<u32> {
+        let mut f = Vec::new();
+        for a in [v.pos, v.color, v.back_color].into_iter().chain(v.tex) {
+            f.extend(a.to_array());
+        }
+        f.extend(v.eye.to_array());
+        f.push(v.point_size);
+        f.extend(v.clip_dist);
+        f.into_iter().map(f32::to_bits).collect()
+    }
+
+    #[test]
+    fn batched_lanes_match_one_vertex_at_a_time_bit_for_bit() {
+        use crate::state::{Light, Lighting};
+        // Awkward values: zero, huge, tiny, negative zero, NaN, infinities, and lengths
+        // that make normals zero or non-unit; 13 vertices, so the last group is short.
+        let odd = [
+            0.0,
+            -0.0,
+            1.0,
+            -0.75,
+            3.0e38,
+            1.0e-39,
+            f32::NAN,
+            f32::INFINITY,
+            0.3,
+            -2.5,
+            0.001,
+            7.0,
+            -1.0e-20,
+        ];
+        let n = odd.len();
+        let at = |k: usize, j: usize| odd[(k * 5 + j * 3) % n] + (k as f32) * 0.1;
+        let pos: Vec<f32> = (0..n).flat_map(|k| (0..3).map(move |j| at(k, j))).collect();
+        let nrm: Vec<f32> = (0..n)
+            .flat_map(|k| (0..3).map(move |j| at(k + 1, j)))
+            .collect();
+        let col: Vec<f32> = (0..n)
+            .flat_map(|k| (0..4).map(move |j| at(k + 2, j) * 0.5))
+            .collect();
+        // Positions with a w of their own (2, 0, 1, -0.5, ...): eye positions a positional
+        // light divides by their w.
+        let pos4: Vec<f32> = (0..n)
+            .flat_map(|k| {
+                (0..3)
+                    .map(move |j| at(k, j))
+                    .chain([[2.0, 0.0, 1.0, -0.5][k % 4]])
+            })
+            .collect();
+        let (pb, nb, cb, p4b) = (bytes(&pos), bytes(&nrm), bytes(&col), bytes(&pos4));
+        let fixed: Vec<u8> = (0..2 * n as i32)
+            .flat_map(|k| (k * 40_000 - 300_000).to_ne_bytes())
+            .collect();
+        fn array(data: &[u8], size: usize) -> AttribArray<'_> {
+            AttribArray {
+                data,
+                ty: ComponentType::Float,
+                size,
+                stride: 4 * size,
+                normalized: false,
+            }
+        }
+        let light = |dir: Vec3, spec: f32| Light {
+            ambient: Vec4::new(0.1, 0.2, 0.3, 1.0),
+            diffuse: Vec4::new(0.9, 0.7, 0.5, 1.0),
+            specular: Vec4::splat(spec),
+            position: dir.extend(0.0),
+            ..Light::default()
+        };
+        for case in 0..256u32 {
+            let mut s = RenderState::new(8, 8);
+            s.modelview = Mat4::from_scale(Vec3::new(1.5, 0.5, 2.0))
+                * Mat4::from_rotation_x(0.4)
+                * Mat4::from_translation(Vec3::new(0.25, -1.0, 3.0));
+            s.projection = Mat4::perspective_rh_gl(0.9, 1.3, 0.5, 20.0);
+            s.normalize = case & 1 != 0;
+            s.rescale_normal = case & 2 != 0;
+            if case & 4 != 0 {
+                let mut l = Lighting {
+                    lights: vec![
+                        light(Vec3::new(0.3, 0.5, 1.0), 1.0),
+                        light(
+                            Vec3::new(-1.0, 0.2, 0.1),
+                            if case & 16 != 0 { 0.0 } else { 0.6 },
+                        ),
+                    ],
+                    two_side: case & 8 != 0,
+                    color_material: case & 16 == 0,
+                    ..Lighting::default()
+                };
+                if case & 64 != 0 {
+                    // Positional lights with attenuation (one at w = 2), a spot light,
+                    // and a directional spot light.
+                    l.lights[0].position = Vec4::new(1.0, 2.0, -3.0, 1.0);
+                    l.lights[0].attenuation = [0.5, 0.25, 0.125];
+                    l.lights[1].position = Vec4::new(-2.0, 0.5, 4.0, 2.0);
+                    l.lights[1].spot_cutoff = 60.0;
+                    l.lights[1].spot_exponent = 3.5;
+                    l.lights[1].spot_direction = Vec3::new(0.2, -0.1, -1.0);
+                    let mut spot = light(Vec3::new(0.1, 0.9, 0.4), 0.5);
+                    spot.spot_cutoff = 90.0;
+                    spot.spot_exponent = 1.0;
+                    spot.spot_direction = Vec3::new(0.0, -1.0, 0.0);
+                    l.lights.push(spot);
+                    if case & 128 != 0 {
+                        // Zero denominators: saturating lights.
+                        l.lights[0].attenuation = [0.0, 0.0, 0.0];
+                        l.lights.push(Light {
+                            position: Vec4::new(0.5, 0.5, 0.5, 1.0),
+                            attenuation: [0.0, 1.0, 0.0],
+                            ..light(Vec3::ZERO, 0.2)
+                        });
+                    }
+                }
+                l.front.specular = Vec4::new(0.5, 0.6, 0.7, 1.0);
+                l.front.shininess = 20.0;
+                l.back.shininess = 0.0;
+                l.back.specular = Vec4::splat(0.3);
+                s.lighting = Some(l);
+            }
+            // Texture coordinates: a constant, a float array under a texture matrix and a
+            // 16.16 array; or, with points and a clip plane, every field per vertex.
+            let prim = if case & 32 != 0 {
+                s.clip_planes = vec![Vec4::new(0.5, -1.0, 0.25, 2.0)];
+                s.point_params.attenuation = [1.0, 0.5, 0.25];
+                Primitive::Points
+            } else {
+                Primitive::Triangles
+            };
+            let mut d = draw(&pb, prim, n);
+            if case & 128 != 0 {
+                d.position = array(&p4b, 4);
+            }
+            d.normal = AttribSource::Array(array(&nb, 3));
+            d.color = AttribSource::Array(array(&cb, 4));
+            if case & 2 != 0 {
+                d.texcoord[1] = AttribSource::Constant([0.5, 0.25, 0.0, 2.0]);
+                d.texcoord[2] = AttribSource::Array(array(&cb, 4));
+                s.texture_matrices[2] = Mat4::from_rotation_z(0.3);
+                d.texcoord[3] = AttribSource::Array(AttribArray {
+                    data: &fixed,
+                    ty: ComponentType::Fixed,
+                    size: 2,
+                    stride: 8,
+                    normalized: false,
+                });
+            }
+            let stage = Stage::new(&s, &d);
+            assert!(stage.batched);
+            let v = run(&s, &d).unwrap();
+            for i in 0..n {
+                let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
+                stage.write(i, &mut one);
+                let t = |k: usize| &v[(i / 3 * 3 + k).min(n - 1)];
+                let tri = [t(0), t(1), t(2)];
+                assert_eq!(
+                    read_bits(&stage, &v[i], tri, i, n),
+                    read_bits(&stage, &one, tri, i, n),
+                    "case {case}, vertex {i}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn batched_lanes_match_one_vertex_for_every_array_type_and_stride() {
+        use crate::state::{Light, Lighting};
+        // Pseudo-random bytes read as every type: as floats they include NaN, infinities
+        // and subnormals. 21 vertices: two full groups and a short one.
+        let n = 21;
+        let mut x = 0x9e37_79b9_7f4a_7c15_u64;
+        let raw: Vec<u8> = (0..64 * n)
+            .map(|_| {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                (x >> 24) as u8
+            })
+            .collect();
+        use ComponentType::*;
+        // (type, size, stride) per array; stride 0 stands for tightly packed.
+        let layouts: [[(ComponentType, usize, usize); 4]; 8] = [
+            // position, normal, color, texcoord
+            [
+                (Byte, 3, 0),
+                (Byte, 3, 0),
+                (UnsignedByte, 4, 0),
+                (Byte, 2, 0),
+            ],
+            [(Short, 4, 0), (Short, 3, 0), (Fixed, 4, 0), (Short, 3, 0)],
+            [
+                (Fixed, 2, 0),
+                (Fixed, 3, 0),
+                (UnsignedByte, 4, 7),
+                (Fixed, 4, 0),
+            ],
+            [
+                (Float, 2, 20),
+                (Float, 3, 16),
+                (Float, 4, 24),
+                (Float, 2, 12),
+            ],
+            [
+                (Byte, 4, 5),
+                (Short, 3, 9),
+                (UnsignedByte, 4, 13),
+                (Short, 2, 6),
+            ],
+            [(Short, 2, 0), (Byte, 3, 3), (Fixed, 4, 20), (Byte, 4, 0)],
+            [
+                (Fixed, 3, 0),
+                (Fixed, 3, 14),
+                (UnsignedByte, 4, 4),
+                (Fixed, 2, 8),
+            ],
+            [
+                (Float, 3, 12),
+                (Float, 3, 12),
+                (Float, 4, 16),
+                (Float, 3, 0),
+            ],
+        ];
+        for (l, layout) in layouts.iter().enumerate() {
+            let arrays: Vec<AttribArray<'_>> = layout
+                .iter()
+                .enumerate()
+                .map(|(which, &(ty, size, stride))| {
+                    let stride = if stride == 0 {
+                        size * ty.size()
+                    } else {
+                        stride
+                    };
+                    // A different offset per array; in the last layout each array ends one
+                    // byte short, so its last element reads as the default.
+                    let end = if l == 7 {
+                        which * 3 + AttribArray::bytes_needed(ty, size, stride, n) - 1
+                    } else {
+                        raw.len()
+                    };
+                    AttribArray {
+                        data: &raw[which * 3..end],
+                        ty,
+                        size,
+                        stride,
+                        // Colors and normals are normalized, as the GL draws them.
+                        normalized: which == 1 || which == 2,
+                    }
+                })
+                .collect();
+            for case in 0..16u32 {
+                let mut s = RenderState::new(8, 8);
+                if case & 8 != 0 {
+                    // Only the provoking vertices lit, in both paths alike.
+                    s.shade_model = crate::state::ShadeModel::Flat;
+                }
+                s.modelview =
+                    Mat4::from_rotation_y(0.7) * Mat4::from_scale(Vec3::new(1.0, 2.0, 0.5));
+                s.projection = Mat4::perspective_rh_gl(0.9, 1.3, 0.5, 20.0);
+                s.normalize = case & 1 != 0;
+                if case & 2 != 0 {
+                    let mut lt = Lighting {
+                        lights: vec![Light {
+                            diffuse: Vec4::new(0.9, 0.7, 0.5, 1.0),
+                            specular: Vec4::ONE,
+                            position: Vec4::new(0.3, 0.5, 1.0, 0.0),
+                            ..Light::default()
+                        }],
+                        color_material: case & 4 != 0,
+                        two_side: true,
+                        ..Lighting::default()
+                    };
+                    lt.front.specular = Vec4::new(0.5, 0.6, 0.7, 1.0);
+                    lt.front.shininess = 12.0;
+                    s.lighting = Some(lt);
+                }
+                if case & 4 != 0 {
+                    s.texture_matrices[0] = Mat4::from_rotation_z(0.3);
+                }
+                let mut d = DrawCall::new(
+                    Primitive::Triangles,
+                    Indices::Range { first: 0, count: n },
+                    arrays[0],
+                );
+                d.normal = AttribSource::Array(arrays[1]);
+                d.color = AttribSource::Array(arrays[2]);
+                d.texcoord[0] = AttribSource::Array(arrays[3]);
+                d.texcoord[1] = AttribSource::Array(arrays[0]);
+                let stage = Stage::new(&s, &d);
+                assert!(stage.batched);
+                let v = run(&s, &d).unwrap();
+                for i in 0..n {
+                    let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
+                    stage.write(i, &mut one);
+                    let t = |k: usize| &v[(i / 3 * 3 + k).min(n - 1)];
+                    let tri = [t(0), t(1), t(2)];
+                    assert_eq!(
+                        read_bits(&stage, &v[i], tri, i, n),
+                        read_bits(&stage, &one, tri, i, n),
+                        "layout {l}, case {case}, vertex {i}"
+                    );
+                    // And the conversion is the scalar fetch's, component by component.
+                    assert_eq!(
+                        one.tex[1].to_array().map(f32::to_bits),
+                        arrays[0].fetch(i).map(f32::to_bits),
+                        "layout {l}, vertex {i}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn flat_shading_lights_only_provoking_vertices_with_the_same_pixels() {
+        use crate::state::{Light, Lighting, ShadeModel};
+        use crate::{render, ColorFormat, DepthFormat, Target, TargetFormat};
+        // A fan of 60 triangles (or 90 lines) around the center, partly off screen so
+        // some are clipped, with normals that differ per vertex.
+        let mut pos = Vec::new();
+        let mut nrm = Vec::new();
+        for t in 0..60 {
+            let a = t as f32 * 0.11;
+            // Every third triangle entirely right of the view volume, and one with a NaN
+            // vertex: clipping rejects those without looking at their colors.
+            let dx = if t % 3 == 1 { 2.5 } else { 0.0 };
+            for (k, r) in [(0, 0.0f32), (1, 1.3), (2, 1.1)] {
+                let b = a + k as f32 * 0.07;
+                let x = if t == 5 && k == 1 {
+                    f32::NAN
+                } else {
+                    r * b.cos() + dx
+                };
+                pos.extend([x, r * b.sin(), 0.1 * k as f32]);
+                nrm.extend([b.sin(), (3.0 * b).cos(), 1.0 + k as f32]);
+            }
+        }
+        let (pb, nb) = (bytes(&pos), bytes(&nrm));
+        let n = pos.len() / 3;
+        let all: Vec<u16> = (0..n as u16).collect();
+        use ShadeModel::{Flat, Smooth};
+        // Texgen keeps a draw on the one-vertex path, where `provoking` does what `deferred`
+        // does on the batched one.
+        for (shade, light_w, two_side, prim, texgen) in [
+            (Flat, 0.0, false, Primitive::Triangles, false),
+            (Flat, 0.0, true, Primitive::Triangles, false),
+            (Flat, 1.0, true, Primitive::Triangles, false),
+            (Flat, 1.0, true, Primitive::Triangles, true),
+            (Flat, 0.0, false, Primitive::Lines, false),
+            (Flat, 1.0, false, Primitive::Lines, false),
+            (Flat, 1.0, false, Primitive::Lines, true),
+            (Smooth, 0.0, true, Primitive::Triangles, false),
+            (Smooth, 1.0, false, Primitive::Triangles, true),
+        ] {
+            let mut s = RenderState::new(48, 48);
+            s.shade_model = shade;
+            if texgen {
+                s.texgen[0] = Some(TexGen::NormalMap);
+            }
+            s.normalize = true;
+            let mut lt = Lighting {
+                lights: vec![Light {
+                    diffuse: Vec4::new(0.9, 0.6, 0.3, 1.0),
+                    specular: Vec4::ONE,
+                    position: Vec4::new(0.4, 0.3, 1.0, light_w),
+                    ..Light::default()
+                }],
+                two_side,
+                ..Lighting::default()
+            };
+            lt.front.specular = Vec4::splat(0.5);
+            lt.front.shininess = 10.0;
+            s.lighting = Some(lt);
+            let with_normals = |indices| {
+                let mut d = draw(&pb, prim, n);
+                d.indices = indices;
+                d.normal = AttribSource::Array(AttribArray {
+                    data: &nb,
+                    ty: ComponentType::Float,
+                    size: 3,
+                    stride: 12,
+                    normalized: false,
+                });
+                d
+            };
+            let image = |indices| {
+                let mut t = Target::new(
+                    48,
+                    48,
+                    TargetFormat {
+                        color: ColorFormat::Rgba8888,
+                        depth: Some(DepthFormat::D24),
+                        stencil_bits: 0,
+                    },
+                );
+                render(&s, &with_normals(indices), &mut t).unwrap();
+                t.color().to_vec()
+            };
+            let range = with_normals(Indices::Range { first: 0, count: n });
+            let step = if prim == Primitive::Lines { 2 } else { 3 };
+            let stage = Stage::new(&s, &range);
+            assert_eq!(stage.provoking, (shade == Flat).then_some((0, step)));
+            assert_eq!(stage.batched, !texgen);
+            assert_eq!(stage.deferred.is_some(), !texgen, "{prim:?}");
+            // Indexed, every vertex is lit: the reference.
+            let lit_all = image(Indices::U16(&all));
+            let provoking_only = image(Indices::Range { first: 0, count: n });
+            let mut colors = lit_all.clone();
+            colors.sort_unstable();
+            colors.dedup();
+            assert!(colors.len() > 10, "{prim:?}: {} colors", colors.len());
+            assert!(
+                lit_all == provoking_only,
+                "{shade:?} {prim:?}, light w {light_w}"
+            );
+        }
+    }
+
+    #[test]
+    fn user_clip_planes_set_under_a_scaled_modelview() {
+        // The GL stores planes in eye space (transformed when set); the vertex stage
+        // measures eye positions against them.
+        let mut s = RenderState::new(8, 8);
+        s.modelview = Mat4::from_scale(Vec3::splat(2.0));
+        // Object-space plane x ≥ 1 set under scale 2 is eye-space x ≥ 2: (1, 0, 0, −1)·M⁻¹.
+        let eye_plane = s.modelview.inverse().transpose() * Vec4::new(1.0, 0.0, 0.0, -1.0);
+        s.clip_planes = vec![eye_plane];
+        let b = bytes(&[0.5, 0.0, 0.0, 1.5, 0.0, 0.0]);
+        let v = run(&s, &draw(&b, Primitive::Points, 2)).unwrap();
+        assert!(v[0].clip_dist[0] < 0.0 && v[1].clip_dist[0] > 0.0);
+        assert!(
+            (v[1].clip_dist[0] - 0.5).abs() < 1e-6,
+            "{}",
+            v[1].clip_dist[0]
+        );
+    }
+
+    #[test]
+    fn point_size_attenuation_and_clamps() {
+        let mut s = RenderState::new(8, 8);
+        s.point_size = 8.0;
+        s.point_params.attenuation = [0.0, 0.0, 1.0];
+        let b = bytes(&[0.0, 0.0, -2.0, 0.0, 0.0, -0.1, 0.0, 0.0, 0.0]);
+        let v = run(&s, &draw(&b, Primitive::Points, 3)).unwrap();
+        assert_eq!(v[0].point_size, 4.0, "8 · sqrt(1 / 2²)");
+        assert_eq!(v[1].point_size, s.point_params.size_max, "clamped to max");
+        assert_eq!(v[2].point_size, s.point_params.size_max, "zero denominator");
+        s.point_params.size_min = 5.0;
+        let v = run(&s, &draw(&b, Primitive::Points, 3)).unwrap();
+        assert_eq!(v[0].point_size, 5.0, "clamped to min");
+    }
+
+    #[test]
+    fn texture_matrix_applies_to_texcoords_with_q() {
+        let mut s = RenderState::new(8, 8);
+        s.texture_matrices[1] = Mat4::from_scale(Vec3::new(2.0, 3.0, 1.0));
+        let b = bytes(&[0.0; 3]);
+        let mut d = draw(&b, Primitive::Triangles, 1);
+        d.texcoord[1] = AttribSource::Constant([0.5, 0.5, 0.0, 2.0]);
+        let v = run(&s, &d).unwrap();
+        assert_eq!(v[0].tex[1], Vec4::new(1.0, 1.5, 0.0, 2.0));
+        assert_eq!(v[0].tex[0], Vec4::new(0.0, 0.0, 0.0, 1.0));
+    }
+
+    #[test]
+    fn matrix_palette_blends_weighted_matrices() {
+        let mut s = RenderState::new(8, 8);
+        s.matrix_palette = Some(vec![
+            Mat4::from_translation(Vec3::new(2.0, 0.0, 0.0)),
+            Mat4::from_translation(Vec3::new(0.0, 4.0, 0.0)),
+        ]);
+        let b = bytes(&[0.0; 3]);
+        let idx = [0u8, 1, 1, 7];
+        let w = bytes(&[0.25, 0.75, 1.0, 1.0]);
+        let mut d = draw(&b, Primitive::Triangles, 2);
+        d.matrix_index = Some(AttribArray {
+            data: &idx,
+            ty: ComponentType::UnsignedByte,
+            size: 2,
+            stride: 2,
+            normalized: false,
+        });
+        d.weight = Some(AttribArray {
+            data: &w,
+            ty: ComponentType::Float,
+            size: 2,
+            stride: 8,
+            normalized: false,
+        });
+        d.position.stride = 0;
+        let v = run(&s, &d).unwrap();
+        assert_eq!(v[0].eye, Vec3::new(0.5, 3.0, 0.0));
+        // Index 7 is past the palette: it contributes nothing.
+        assert_eq!(v[1].eye, Vec3::new(0.0, 4.0, 0.0));
+    }
+
+    #[test]
+    fn sparse_indices_transform_only_what_they_use() {
+        let s = RenderState::new(8, 8);
+        let mut b = vec![0u8; 12 * 70000];
+        b[12 * 65535..12 * 65535 + 4].copy_from_slice(&7f32.to_ne_bytes());
+        let mut d = draw(&b, Primitive::Points, 0);
+        let ix = [3u16, 65535, 3];
+        d.indices = Indices::U16(&ix);
+        let v = run(&s, &d).unwrap();
+        assert_eq!(v.list.len(), 2);
+        assert_eq!(v[65535].pos.x, 7.0);
+        assert_eq!(v[3].pos.x, 0.0);
+    }
+}
