@@ -205,12 +205,14 @@ pub trait NodeExt: Handle {
         ];
         Ok(())
     }
-    /// `getAlignmentTarget(axis)`: IllegalArgument unless `axis` is Y_AXIS or Z_AXIS.
+    /// `getAlignmentTarget(axis)`: IllegalArgument unless `axis` is
+    /// [`AlignTarget::YAxis`] or [`AlignTarget::ZAxis`].
     fn alignment_target(&self, axis: AlignTarget) -> Result<AlignTarget> {
         let k = axis_slot(axis)?;
         Ok(node_data(self.raw()).alignment[k].0)
     }
-    /// `getAlignmentReference(axis)`: IllegalArgument unless `axis` is Y_AXIS or Z_AXIS.
+    /// `getAlignmentReference(axis)`: IllegalArgument unless `axis` is
+    /// [`AlignTarget::YAxis`] or [`AlignTarget::ZAxis`].
     fn alignment_reference(&self, axis: AlignTarget) -> Result<Option<Node>> {
         let k = axis_slot(axis)?;
         Ok(node_data(self.raw()).alignment[k]
