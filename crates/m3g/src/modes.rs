@@ -52,7 +52,11 @@ macro_rules! raw_enum {
 
 /// Declares an OR-able flags type with its raw-value conversions.
 macro_rules! raw_flags {
-    ($(#[$m:meta])* $Name:ident, $what:literal { $($(#[$cm:meta])* $C:ident = $n:literal,)* }) => {
+    (
+        $(#[$m:meta])* $Name:ident, $what:literal {
+            $($(#[$cm:meta])* $C:ident = $n:literal,)*
+        }
+    ) => {
         $(#[$m])*
         #[derive(Clone, Copy, PartialEq, Eq, Hash, Default)]
         pub struct $Name(i32);
@@ -119,9 +123,13 @@ macro_rules! raw_flags {
 
         impl fmt::Debug for $Name {
             fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                let set: Vec<&str> =
-                    Self::NAMES.iter().filter(|(_, v)| self.contains(*v)).map(|(n, _)| *n).collect();
-                write!(f, "{}({})", stringify!($Name), if set.is_empty() { "empty".to_string() } else { set.join(" | ") })
+                let set: Vec<&str> = Self::NAMES
+                    .iter()
+                    .filter(|(_, v)| self.contains(*v))
+                    .map(|(n, _)| *n)
+                    .collect();
+                let shown = if set.is_empty() { "empty".to_string() } else { set.join(" | ") };
+                write!(f, "{}({shown})", stringify!($Name))
             }
         }
     };
