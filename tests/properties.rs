@@ -10,7 +10,7 @@ use gles_cm_core::{
     AttribArray, ColorFormat, ComponentType, DepthFormat, DrawCall, Indices, Primitive,
     RenderState, Target, TargetFormat,
 };
-use m3g::{KeyframeSequence as KS, Transform};
+use m3g::{Interpolation, KeyframeSequence as KS, Transform};
 use proptest::prelude::*;
 
 #[path = "../crates/tools/src/bin/accuracy/depth.rs"]
@@ -122,7 +122,7 @@ proptest! {
         for angle in [tiny, 180.0 - tiny] {
             let h = (angle * 0.5).to_radians();
             let b = [ax.x * h.sin(), ax.y * h.sin(), ax.z * h.sin(), h.cos()];
-            let seq = KS::new(2, 4, KS::SLERP).unwrap();
+            let seq = KS::new(2, 4, Interpolation::Slerp).unwrap();
             seq.set_keyframe(0, 0, &[0.0, 0.0, 0.0, 1.0]).unwrap();
             seq.set_keyframe(1, 100, &b).unwrap();
             seq.set_duration(100).unwrap();

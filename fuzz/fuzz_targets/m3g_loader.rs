@@ -1,5 +1,5 @@
 //! Fuzzes the M3G Loader (and, for inputs that load, the writer and a reload, and rendering
-//! what loaded): any input must give `Ok` or a `LoadError`, never a panic, hang or huge
+//! what loaded): any input must give `Ok` or an `m3g::Error`, never a panic, hang or huge
 //! allocation. Seed the corpus with `tests/data/m3g/*.m3g` (see README "Fuzzing").
 #![no_main]
 

@@ -3,7 +3,7 @@
 //! `/d/3.png`, `/d/sub/4.m3g` and `/5.m3g` (outside the folder), and `/d/0.m3g` is loaded,
 //! once with references kept inside the folder and once with them allowed anywhere; what
 //! loads is rendered. Loops, fan-outs, missing files, files outside the folder and budget
-//! overruns must all end in `Ok` or a `LoadError`.
+//! overruns must all end in `Ok` or an `m3g::Error`.
 #![no_main]
 
 mod render;

@@ -4,7 +4,7 @@
 
 use m3g::loader::{render_roots, RenderTarget};
 use m3g::{Camera, Graphics3D, Node, Object3D, Object3DExt, TransformableExt};
-use m3g::{ColorFormat, DepthFormat, Target, TargetFormat};
+use m3g::{ColorFormat, DepthFormat, RenderHints, Target, TargetFormat};
 
 /// Renders the first World (at two times, so animation runs) and each root node with a
 /// default camera, into 16 × 16 targets.
@@ -27,7 +27,7 @@ pub fn render_loaded(roots: &[Object3D]) {
                 stencil_bits: 0,
             },
         );
-        if g.bind_target(target, true, 0).is_err() {
+        if g.bind_target(target, true, RenderHints::empty()).is_err() {
             return;
         }
         let _ = node.animate(500);

@@ -40,6 +40,7 @@ val_from!(
     String,
     Vec<f32>,
     Vec<i32>,
+    Vec<usize>,
     Vec<&str>
 );
 
@@ -103,7 +104,8 @@ impl Graph {
         let mut track_targets: HashMap<usize, Vec<usize>> = HashMap::new();
         for (k, e) in entries.iter().enumerate() {
             for i in 0..e.obj.animation_track_count() {
-                if let Some(t) = e.obj.animation_track(i).ok().and_then(|t| index.get(&t)) {
+                let track = e.obj.animation_track(i).map(Object3D::from);
+                if let Some(t) = track.ok().and_then(|t| index.get(&t)) {
                     track_targets.entry(*t).or_default().push(k);
                 }
             }
@@ -168,13 +170,13 @@ impl Graph {
         } else if let Some(c) = o.downcast::<Camera>() {
             let (kind, params) = c.get_projection_params();
             let name = match kind {
-                Camera::PERSPECTIVE => "perspective",
-                Camera::PARALLEL => "parallel",
+                Projection::Perspective => "perspective",
+                Projection::Parallel => "parallel",
                 _ => "generic",
             };
             p.push(("projection", name.into()));
             if let Some([a, aspect, near, far]) = params {
-                let first = if kind == Camera::PERSPECTIVE {
+                let first = if kind == Projection::Perspective {
                     "fovy"
                 } else {
                     "height"
@@ -186,19 +188,19 @@ impl Graph {
             }
         } else if let Some(l) = o.downcast::<Light>() {
             let mode = match l.mode() {
-                Light::AMBIENT => "ambient",
-                Light::DIRECTIONAL => "directional",
-                Light::OMNI => "omni",
-                _ => "spot",
+                LightMode::Ambient => "ambient",
+                LightMode::Directional => "directional",
+                LightMode::Omni => "omni",
+                LightMode::Spot => "spot",
             };
             p.push(("mode", mode.into()));
             p.push(("color", rgb(l.color()).into()));
             p.push(("intensity", l.intensity().into()));
-            if l.mode() == Light::SPOT {
+            if l.mode() == LightMode::Spot {
                 p.push(("spot_angle", l.spot_angle().into()));
                 p.push(("spot_exponent", l.spot_exponent().into()));
             }
-            if matches!(l.mode(), Light::OMNI | Light::SPOT) {
+            if matches!(l.mode(), LightMode::Omni | LightMode::Spot) {
                 let a = vec![
                     l.constant_attenuation(),
                     l.linear_attenuation(),
@@ -248,19 +250,19 @@ impl Graph {
                 "texture7",
             ];
             for (unit, name) in UNITS.iter().enumerate().take(NUM_TEXTURE_UNITS) {
-                if let Ok(Some(t)) = a.texture(unit as i32) {
+                if let Ok(Some(t)) = a.texture(unit) {
                     p.push((name, self.r(Some(t))));
                 }
             }
         } else if let Some(m) = o.downcast::<Material>() {
             for (name, target) in [
-                ("ambient", Material::AMBIENT),
-                ("diffuse", Material::DIFFUSE),
-                ("emissive", Material::EMISSIVE),
-                ("specular", Material::SPECULAR),
+                ("ambient", MaterialColor::AMBIENT),
+                ("diffuse", MaterialColor::DIFFUSE),
+                ("emissive", MaterialColor::EMISSIVE),
+                ("specular", MaterialColor::SPECULAR),
             ] {
                 if let Ok(c) = m.color(target) {
-                    let c = if target == Material::DIFFUSE {
+                    let c = if target == MaterialColor::DIFFUSE {
                         argb(c)
                     } else {
                         rgb(c)
@@ -275,18 +277,18 @@ impl Graph {
             ));
         } else if let Some(m) = o.downcast::<PolygonMode>() {
             let culling = match m.culling() {
-                PolygonMode::CULL_BACK => "back",
-                PolygonMode::CULL_FRONT => "front",
+                Culling::Back => "back",
+                Culling::Front => "front",
                 _ => "none",
             };
             p.push(("culling", culling.into()));
-            let winding = if m.winding() == PolygonMode::WINDING_CW {
+            let winding = if m.winding() == Winding::Cw {
                 "cw"
             } else {
                 "ccw"
             };
             p.push(("winding", winding.into()));
-            let shading = if m.shading() == PolygonMode::SHADE_FLAT {
+            let shading = if m.shading() == Shading::Flat {
                 "flat"
             } else {
                 "smooth"
@@ -302,10 +304,10 @@ impl Graph {
             ));
         } else if let Some(c) = o.downcast::<CompositingMode>() {
             let blending = match c.blending() {
-                CompositingMode::ALPHA => "alpha",
-                CompositingMode::ALPHA_ADD => "alpha_add",
-                CompositingMode::MODULATE => "modulate",
-                CompositingMode::MODULATE_X2 => "modulate_x2",
+                Blending::Alpha => "alpha",
+                Blending::AlphaAdd => "alpha_add",
+                Blending::Modulate => "modulate",
+                Blending::ModulateX2 => "modulate_x2",
                 _ => "replace",
             };
             p.push(("blending", blending.into()));
@@ -316,7 +318,7 @@ impl Graph {
             p.push(("alpha_write", c.is_alpha_write_enabled().into()));
         } else if let Some(f) = o.downcast::<Fog>() {
             p.push(("color", rgb(f.color()).into()));
-            if f.mode() == Fog::LINEAR {
+            if f.mode() == FogMode::Linear {
                 p.push(("mode", "linear".into()));
                 p.push(("near", f.near_distance().into()));
                 p.push(("far", f.far_distance().into()));
@@ -331,7 +333,7 @@ impl Graph {
             if b.image().is_some() {
                 p.push(("image", self.r(b.image())));
                 let mode = |m| {
-                    if m == Background::REPEAT {
+                    if m == ImageMode::Repeat {
                         "repeat"
                     } else {
                         "border"
@@ -352,14 +354,14 @@ impl Graph {
                 format!("{}x{}", image.width(), image.height()).into(),
             ));
             let filter = |f| match f {
-                Texture2D::FILTER_BASE_LEVEL => "base_level",
-                Texture2D::FILTER_LINEAR => "linear",
+                TextureFilter::BaseLevel => "base_level",
+                TextureFilter::Linear => "linear",
                 _ => "nearest",
             };
             p.push(("level_filter", filter(t.level_filter()).into()));
             p.push(("image_filter", filter(t.image_filter()).into()));
             let wrap = |w| {
-                if w == Texture2D::WRAP_CLAMP {
+                if w == TextureWrap::Clamp {
                     "clamp"
                 } else {
                     "repeat"
@@ -368,23 +370,23 @@ impl Graph {
             p.push(("wrap_s", wrap(t.wrapping_s()).into()));
             p.push(("wrap_t", wrap(t.wrapping_t()).into()));
             let func = match t.blending() {
-                Texture2D::FUNC_ADD => "add",
-                Texture2D::FUNC_BLEND => "blend",
-                Texture2D::FUNC_DECAL => "decal",
-                Texture2D::FUNC_MODULATE => "modulate",
-                _ => "replace",
+                TextureFunction::Add => "add",
+                TextureFunction::Blend => "blend",
+                TextureFunction::Decal => "decal",
+                TextureFunction::Modulate => "modulate",
+                TextureFunction::Replace => "replace",
             };
             p.push(("blending", func.into()));
-            if t.blending() == Texture2D::FUNC_BLEND {
+            if t.blending() == TextureFunction::Blend {
                 p.push(("blend_color", rgb(t.blend_color()).into()));
             }
         } else if let Some(i) = o.downcast::<Image2D>() {
             let format = match i.format() {
-                Image2D::ALPHA => "ALPHA",
-                Image2D::LUMINANCE => "LUMINANCE",
-                Image2D::LUMINANCE_ALPHA => "LUMINANCE_ALPHA",
-                Image2D::RGB => "RGB",
-                _ => "RGBA",
+                ImageFormat::Alpha => "ALPHA",
+                ImageFormat::Luminance => "LUMINANCE",
+                ImageFormat::LuminanceAlpha => "LUMINANCE_ALPHA",
+                ImageFormat::Rgb => "RGB",
+                ImageFormat::Rgba => "RGBA",
             };
             p.push(("format", format.into()));
             p.push(("width", i.width().into()));
@@ -410,7 +412,7 @@ impl Graph {
             } else {
                 p.push(("default_color", argb(v.default_color()).into()));
             }
-            let units = (0..NUM_TEXTURE_UNITS as i32)
+            let units = (0..NUM_TEXTURE_UNITS)
                 .filter(|&u| v.get_tex_coords(u).is_ok_and(|(a, _)| a.is_some()))
                 .count();
             if units > 0 {
@@ -509,33 +511,32 @@ fn controller(c: &AnimationController) -> Vec<(&'static str, Val)> {
     ]
 }
 
-fn rgb(c: i32) -> String {
-    format!("0x{:06X}", c as u32 & 0xFF_FFFF)
+fn rgb(c: Color) -> String {
+    format!("0x{:06X}", c.0 & 0xFF_FFFF)
 }
 
-fn argb(c: i32) -> String {
-    format!("0x{:08X}", c as u32)
+fn argb(c: Color) -> String {
+    format!("0x{c:08X}")
 }
 
-fn interpolation(i: i32) -> &'static str {
+fn interpolation(i: Interpolation) -> &'static str {
     match i {
-        KeyframeSequence::LINEAR => "linear",
-        KeyframeSequence::SLERP => "slerp",
-        KeyframeSequence::SPLINE => "spline",
-        KeyframeSequence::SQUAD => "squad",
-        _ => "step",
+        Interpolation::Linear => "linear",
+        Interpolation::Slerp => "slerp",
+        Interpolation::Spline => "spline",
+        Interpolation::Squad => "squad",
+        Interpolation::Step => "step",
     }
 }
 
-fn repeat(m: i32) -> &'static str {
-    if m == KeyframeSequence::LOOP {
-        "loop"
-    } else {
-        "constant"
+fn repeat(m: RepeatMode) -> &'static str {
+    match m {
+        RepeatMode::Loop => "loop",
+        RepeatMode::Constant => "constant",
     }
 }
 
-fn property(p: i32) -> &'static str {
+fn property(p: AnimationProperty) -> &'static str {
     const NAMES: [&str; 21] = [
         "ALPHA",
         "AMBIENT_COLOR",
@@ -559,10 +560,7 @@ fn property(p: i32) -> &'static str {
         "TRANSLATION",
         "VISIBILITY",
     ];
-    usize::try_from(p - AnimationTrack::ALPHA)
-        .ok()
-        .and_then(|i| NAMES.get(i).copied())
-        .unwrap_or("?")
+    NAMES[(p.as_raw() - AnimationProperty::Alpha.as_raw()) as usize]
 }
 
 /// A parameter value as text: strings bare, references `#N`, the rest as compact JSON.

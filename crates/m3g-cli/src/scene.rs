@@ -7,8 +7,9 @@ use std::collections::HashSet;
 
 use glam::{Quat, Vec3};
 use m3g::{
-    AnimationTrack, Camera, GroupExt, KeyframeSequence, Light, Mesh, MorphingMesh, Node, NodeExt,
-    Object3D, Object3DExt, SkinnedMesh, Sprite3D, TransformableExt, VertexBuffer, World,
+    AnimationTrack, Camera, GroupExt, Light, LightMode, Mesh, MorphingMesh, Node, NodeExt,
+    Object3D, Object3DExt, RepeatMode, SkinnedMesh, Sprite3D, TransformableExt, VertexBuffer,
+    World,
 };
 
 /// The vertical field of view of the default camera, in degrees.
@@ -120,14 +121,14 @@ pub fn framing_camera(center: Vec3, radius: f32, aspect: f32) -> Result<Camera, 
 /// and a white ambient light (which the default Material's 20 % gray ambient color turns
 /// into a soft fill).
 pub fn default_lights() -> Result<[Light; 2], String> {
-    let err = |e: m3g::M3gError| format!("cannot set up the default light: {e}");
+    let err = |e: m3g::Error| format!("cannot set up the default light: {e}");
     let sun = Light::new();
-    sun.set_mode(Light::DIRECTIONAL).map_err(err)?;
+    sun.set_mode(LightMode::Directional);
     // A Light shines along its -Z axis; turn that toward the lower right, away from the viewer.
     let q = Quat::from_rotation_arc(Vec3::NEG_Z, Vec3::new(0.35, -0.45, -1.0).normalize());
     sun.set_orientation_quat(q.x, q.y, q.z, q.w).map_err(err)?;
     let ambient = Light::new();
-    ambient.set_mode(Light::AMBIENT).map_err(err)?;
+    ambient.set_mode(LightMode::Ambient);
     Ok([sun, ambient])
 }
 
@@ -306,7 +307,7 @@ pub fn track_end(track: &AnimationTrack, start: i32) -> Option<(i64, bool)> {
             (t, inclusive)
         }
     };
-    if seq.repeat_mode() == KeyframeSequence::LOOP {
+    if seq.repeat_mode() == RepeatMode::Loop {
         return Some(over(from as f64 + duration / speed.abs(), false));
     }
     let ref_world = c.ref_world_time() as f64;
@@ -347,15 +348,15 @@ pub fn frame_count(start: i32, end: i64, inclusive: bool, step: i32) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use m3g::AnimationController;
+    use m3g::{AnimationController, AnimationProperty, Interpolation, KeyframeSequence};
 
-    fn track(duration: i32, mode: i32) -> (AnimationTrack, AnimationController) {
-        let seq = KeyframeSequence::new(2, 3, KeyframeSequence::LINEAR).unwrap();
+    fn track(duration: i32, mode: RepeatMode) -> (AnimationTrack, AnimationController) {
+        let seq = KeyframeSequence::new(2, 3, Interpolation::Linear).unwrap();
         seq.set_keyframe(0, 0, &[0.0; 3]).unwrap();
         seq.set_keyframe(1, duration / 2, &[1.0; 3]).unwrap();
         seq.set_duration(duration).unwrap();
-        seq.set_repeat_mode(mode).unwrap();
-        let t = AnimationTrack::new(&seq, AnimationTrack::TRANSLATION).unwrap();
+        seq.set_repeat_mode(mode);
+        let t = AnimationTrack::new(&seq, AnimationProperty::Translation).unwrap();
         let c = AnimationController::new();
         t.set_controller(Some(&c));
         (t, c)
@@ -363,9 +364,9 @@ mod tests {
 
     #[test]
     fn loops_last_one_period_and_one_shots_until_their_end() {
-        let (a, _) = track(1200, KeyframeSequence::LOOP);
+        let (a, _) = track(1200, RepeatMode::Loop);
         assert_eq!(track_end(&a, 0), Some((1200, false)));
-        let (b, bc) = track(2000, KeyframeSequence::CONSTANT);
+        let (b, bc) = track(2000, RepeatMode::Constant);
         assert_eq!(track_end(&b, 0), Some((2000, true)));
         // Twice as fast: half the world time.
         bc.set_speed(2.0, 0);
@@ -380,7 +381,7 @@ mod tests {
         assert_eq!(frame_count(0, 1200, false, 100), 12);
         assert_eq!(frame_count(0, 2000, true, 100), 21);
         // Without a controller a track does nothing.
-        let (c, _) = track(500, KeyframeSequence::CONSTANT);
+        let (c, _) = track(500, RepeatMode::Constant);
         c.set_controller(None);
         assert_eq!(track_end(&c, 0), None);
         assert_eq!(animation_end(&[c], 0), None);

@@ -219,9 +219,9 @@ fn every_corpus_file_renders() {
 
 /// A World whose Background shows a 2 × 1 image of `format` (red, then green, as phone
 /// content made for an RGB `Graphics` target has it), written as a `.m3g` file.
-fn background_world_file(dir: &Path, format: i32) -> PathBuf {
-    use m3g::{Background, Camera, GroupExt, Image2D, Object3DExt, World};
-    let bpp = if format == Image2D::RGBA { 4 } else { 3 };
+fn background_world_file(dir: &Path, format: m3g::ImageFormat) -> PathBuf {
+    use m3g::{Background, Camera, GroupExt, Image2D, ImageFormat, Object3DExt, World};
+    let bpp = if format == ImageFormat::Rgba { 4 } else { 3 };
     let mut pixels = vec![0u8; 2 * bpp];
     pixels[0] = 255; // red
     pixels[bpp + 1] = 255; // green
@@ -239,7 +239,7 @@ fn background_world_file(dir: &Path, format: i32) -> PathBuf {
     world.set_active_camera(&camera);
     world.set_background(Some(&bg));
     let bytes = m3g::writer::save(&[world.as_object3d()], false).unwrap();
-    let path = dir.join(format!("background-{format}.m3g"));
+    let path = dir.join(format!("background-{}.m3g", format.as_raw()));
     std::fs::write(&path, bytes).unwrap();
     path
 }
@@ -247,7 +247,7 @@ fn background_world_file(dir: &Path, format: i32) -> PathBuf {
 #[test]
 fn rgb_backgrounds_render_on_the_default_graphics_target() {
     let dir = tmp("rgb-background");
-    let rgb_file = background_world_file(&dir, m3g::Image2D::RGB);
+    let rgb_file = background_world_file(&dir, m3g::ImageFormat::Rgb);
     let out = dir.join("rgb.png");
     let o = run(&[&rgb_file, &"--size", &"4x2", &"--out", &out]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -264,7 +264,7 @@ fn rgb_backgrounds_render_on_the_default_graphics_target() {
         err.contains("background image format RGB differs from the target's RGBA"),
         "{err}"
     );
-    let rgba_file = background_world_file(&dir, m3g::Image2D::RGBA);
+    let rgba_file = background_world_file(&dir, m3g::ImageFormat::Rgba);
     let o = run(&[
         &rgba_file,
         &"--target",
@@ -691,9 +691,9 @@ fn cube_mesh() -> m3g::Mesh {
         }
     }
     let positions = VertexArray::new(24, 3, 1).unwrap();
-    positions.set_bytes(0, 24, &pos).unwrap();
+    positions.set_bytes(0, &pos).unwrap();
     let normals = VertexArray::new(24, 3, 1).unwrap();
-    normals.set_bytes(0, 24, &nrm).unwrap();
+    normals.set_bytes(0, &nrm).unwrap();
     let vb = VertexBuffer::new();
     vb.set_positions(Some(&positions), 1.0, None).unwrap();
     vb.set_normals(Some(&normals)).unwrap();
@@ -701,7 +701,7 @@ fn cube_mesh() -> m3g::Mesh {
     let look = Appearance::new();
     look.set_material(Some(&Material::new()));
     let pm = PolygonMode::new();
-    pm.set_culling(PolygonMode::CULL_NONE).unwrap();
+    pm.set_culling(Culling::None);
     look.set_polygon_mode(Some(&pm));
     Mesh::new(&vb, &ib.as_index_buffer(), Some(&look))
 }
@@ -758,7 +758,7 @@ fn animated_world(
     dir: &Path,
     name: &str,
     duration: i32,
-    mode: i32,
+    mode: m3g::RepeatMode,
     interval: Option<(i32, i32)>,
 ) -> PathBuf {
     use m3g::*;
@@ -772,12 +772,12 @@ fn animated_world(
     let group = Group::new();
     group.add_child(&cube_mesh()).unwrap();
     world.add_child(&group).unwrap();
-    let seq = KeyframeSequence::new(2, 3, KeyframeSequence::LINEAR).unwrap();
+    let seq = KeyframeSequence::new(2, 3, Interpolation::Linear).unwrap();
     seq.set_keyframe(0, 0, &[-1.0, 0.0, 0.0]).unwrap();
     seq.set_keyframe(1, duration / 2, &[1.0, 0.0, 0.0]).unwrap();
     seq.set_duration(duration).unwrap();
-    seq.set_repeat_mode(mode).unwrap();
-    let track = AnimationTrack::new(&seq, AnimationTrack::TRANSLATION).unwrap();
+    seq.set_repeat_mode(mode);
+    let track = AnimationTrack::new(&seq, AnimationProperty::Translation).unwrap();
     let controller = AnimationController::new();
     if let Some((s, e)) = interval {
         controller.set_active_interval(s, e).unwrap();
@@ -801,10 +801,10 @@ fn apng_frames(path: &Path) -> Vec<image::Frame> {
 
 #[test]
 fn animate_covers_the_whole_animation() {
-    use m3g::KeyframeSequence;
+    use m3g::RepeatMode;
     let dir = tmp("animate");
     // A loop: one period, its end (= its start) not repeated: 1200 / 100 = 12 frames.
-    let looping = animated_world(&dir, "loop.m3g", 1200, KeyframeSequence::LOOP, None);
+    let looping = animated_world(&dir, "loop.m3g", 1200, RepeatMode::Loop, None);
     let out = dir.join("loop.png");
     let o = run(&[
         &looping,
@@ -824,7 +824,7 @@ fn animate_covers_the_whole_animation() {
     // The cube moves.
     assert_ne!(frames[0].buffer(), frames[3].buffer());
     // A one-shot sequence: up to and including its end, 2000 / 100 + 1 = 21 frames.
-    let once = animated_world(&dir, "once.m3g", 2000, KeyframeSequence::CONSTANT, None);
+    let once = animated_world(&dir, "once.m3g", 2000, RepeatMode::Constant, None);
     let o = run(&[
         &once,
         &"--animate",
@@ -843,13 +843,7 @@ fn animate_covers_the_whole_animation() {
     );
     // An active interval ends it early: [0, 700) at 100 ms steps is 7 frames (at 700 the
     // track is off and the cube stays where it was).
-    let cut = animated_world(
-        &dir,
-        "cut.m3g",
-        2000,
-        KeyframeSequence::CONSTANT,
-        Some((0, 700)),
-    );
+    let cut = animated_world(&dir, "cut.m3g", 2000, RepeatMode::Constant, Some((0, 700)));
     let o = run(&[
         &cut,
         &"--animate",
@@ -866,7 +860,7 @@ fn animate_covers_the_whole_animation() {
     let o = run(&[&once, &"--animate", &"--frames", &"3"]);
     assert_eq!(o.status.code(), Some(2));
     // A file without animation gives one frame.
-    let still = background_world_file(&dir, m3g::Image2D::RGB);
+    let still = background_world_file(&dir, m3g::ImageFormat::Rgb);
     let o = run(&[
         &still,
         &"--animate",

@@ -6,10 +6,10 @@ use std::rc::Rc;
 
 use glam::{Quat, Vec3};
 
-use super::camera::Camera;
 use super::error::{iae, Result};
 use super::keyframe::KeyframeSequence;
 use super::mesh::MAX_SPRITE_CROP_DIMENSION;
+use super::modes::{AnimationProperty as P, Projection};
 use super::object::{class_data, for_each_reachable, handle, Inner, Kind, ObjRef};
 
 #[derive(Clone, Debug)]
@@ -124,7 +124,7 @@ impl ControllerData {
 #[derive(Clone, Debug)]
 pub(crate) struct TrackData {
     pub sequence: KeyframeSequence,
-    pub property: i32,
+    pub property: P,
     pub controller: Option<AnimationController>,
 }
 
@@ -137,69 +137,42 @@ handle!(
 class_data!(AnimationTrack, AnimationTrack, TrackData);
 
 impl AnimationTrack {
-    /// Node alpha factor; alpha of Background color, Material diffuse color or VertexBuffer
-    /// default color. 1 component.
-    pub const ALPHA: i32 = 256;
-    /// Material ambient color. 3 components.
-    pub const AMBIENT_COLOR: i32 = 257;
-    /// Light, Background, Fog color; Texture2D blend color; VertexBuffer default RGB.
-    /// 3 components.
-    pub const COLOR: i32 = 258;
-    /// Sprite3D or Background crop: 2 (x, y) or 4 (x, y, w, h) components.
-    pub const CROP: i32 = 259;
-    /// Fog density. 1 component.
-    pub const DENSITY: i32 = 260;
-    /// Material diffuse color. 3 components.
-    pub const DIFFUSE_COLOR: i32 = 261;
-    /// Material emissive color. 3 components.
-    pub const EMISSIVE_COLOR: i32 = 262;
-    /// Camera or Fog far distance. 1 component.
-    pub const FAR_DISTANCE: i32 = 263;
-    /// Camera field of view (or parallel height). 1 component.
-    pub const FIELD_OF_VIEW: i32 = 264;
-    /// Light intensity. 1 component.
-    pub const INTENSITY: i32 = 265;
-    /// MorphingMesh weights. Any number of components.
-    pub const MORPH_WEIGHTS: i32 = 266;
-    /// Camera or Fog near distance. 1 component.
-    pub const NEAR_DISTANCE: i32 = 267;
-    /// Transformable orientation, a quaternion (x, y, z, w). 4 components.
-    pub const ORIENTATION: i32 = 268;
-    /// Node picking enable (≥ 0.5 = on). 1 component.
-    pub const PICKABILITY: i32 = 269;
-    /// Transformable scale: 1 (uniform) or 3 components.
-    pub const SCALE: i32 = 270;
-    /// Material shininess. 1 component.
-    pub const SHININESS: i32 = 271;
-    /// Material specular color. 3 components.
-    pub const SPECULAR_COLOR: i32 = 272;
-    /// Light spot angle. 1 component.
-    pub const SPOT_ANGLE: i32 = 273;
-    /// Light spot exponent. 1 component.
-    pub const SPOT_EXPONENT: i32 = 274;
-    /// Transformable translation. 3 components.
-    pub const TRANSLATION: i32 = 275;
-    /// Node rendering enable (≥ 0.5 = on). 1 component.
-    pub const VISIBILITY: i32 = 276;
-
-    /// `AnimationTrack(sequence, property)`: no controller. IllegalArgument for an unknown
-    /// property or a sequence whose component count does not fit it.
-    pub fn new(sequence: &KeyframeSequence, property: i32) -> Result<AnimationTrack> {
-        if !(Self::ALPHA..=Self::VISIBILITY).contains(&property) {
-            return iae("unknown animation property");
-        }
+    /// `AnimationTrack(sequence, property)`: no controller. IllegalArgument for a sequence
+    /// whose component count does not fit the property.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// // Fade a mesh's alpha factor out over one second.
+    /// let fade = KeyframeSequence::new(2, 1, Interpolation::Linear)?;
+    /// fade.set_keyframe(0, 0, &[1.0])?;
+    /// fade.set_keyframe(1, 1000, &[0.0])?;
+    /// fade.set_duration(1000)?;
+    /// let track = AnimationTrack::new(&fade, AnimationProperty::Alpha)?;
+    /// track.set_controller(Some(&AnimationController::new()));
+    ///
+    /// let group = Group::new();
+    /// group.add_animation_track(&track)?;
+    /// assert_eq!(group.animation_track(0)?, track);
+    /// group.animate(250)?;
+    /// assert_eq!(group.alpha_factor(), 0.75);
+    /// # Ok(())
+    /// # }
+    /// ```
+    pub fn new(sequence: &KeyframeSequence, property: P) -> Result<AnimationTrack> {
         let c = sequence.component_count();
         let ok = match property {
-            Self::AMBIENT_COLOR
-            | Self::COLOR
-            | Self::DIFFUSE_COLOR
-            | Self::EMISSIVE_COLOR
-            | Self::SPECULAR_COLOR
-            | Self::TRANSLATION => c == 3,
-            Self::CROP => c == 2 || c == 4,
-            Self::SCALE => c == 1 || c == 3,
-            Self::ORIENTATION => c == 4,
-            Self::MORPH_WEIGHTS => true,
+            P::AmbientColor
+            | P::Color
+            | P::DiffuseColor
+            | P::EmissiveColor
+            | P::SpecularColor
+            | P::Translation => c == 3,
+            P::Crop => c == 2 || c == 4,
+            P::Scale => c == 1 || c == 3,
+            P::Orientation => c == 4,
+            P::MorphWeights => true,
             _ => c == 1,
         };
         if !ok {
@@ -228,49 +201,45 @@ impl AnimationTrack {
         self.d().sequence.clone()
     }
     /// `getTargetProperty()`.
-    pub fn target_property(&self) -> i32 {
+    pub fn target_property(&self) -> P {
         self.d().property
     }
 }
 
 /// Whether `property` can be animated in an object like `i` (AnimationTrack's table).
-pub(crate) fn property_applies(i: &Inner, property: i32) -> bool {
-    type T = AnimationTrack;
+pub(crate) fn property_applies(i: &Inner, property: P) -> bool {
     let transformable = i.tf.is_some();
     let node = i.node.is_some();
-    if transformable && matches!(property, T::ORIENTATION | T::SCALE | T::TRANSLATION) {
+    if transformable && matches!(property, P::Orientation | P::Scale | P::Translation) {
         return true;
     }
-    if node && matches!(property, T::ALPHA | T::PICKABILITY | T::VISIBILITY) {
+    if node && matches!(property, P::Alpha | P::Pickability | P::Visibility) {
         return true;
     }
     match &i.kind {
-        Kind::Camera(_) => matches!(
-            property,
-            T::FAR_DISTANCE | T::NEAR_DISTANCE | T::FIELD_OF_VIEW
-        ),
+        Kind::Camera(_) => matches!(property, P::FarDistance | P::NearDistance | P::FieldOfView),
         Kind::Light(_) => matches!(
             property,
-            T::COLOR | T::INTENSITY | T::SPOT_ANGLE | T::SPOT_EXPONENT
+            P::Color | P::Intensity | P::SpotAngle | P::SpotExponent
         ),
         Kind::Material(_) => matches!(
             property,
-            T::ALPHA
-                | T::AMBIENT_COLOR
-                | T::DIFFUSE_COLOR
-                | T::EMISSIVE_COLOR
-                | T::SPECULAR_COLOR
-                | T::SHININESS
+            P::Alpha
+                | P::AmbientColor
+                | P::DiffuseColor
+                | P::EmissiveColor
+                | P::SpecularColor
+                | P::Shininess
         ),
         Kind::Fog(_) => matches!(
             property,
-            T::COLOR | T::DENSITY | T::FAR_DISTANCE | T::NEAR_DISTANCE
+            P::Color | P::Density | P::FarDistance | P::NearDistance
         ),
-        Kind::Background(_) => matches!(property, T::ALPHA | T::COLOR | T::CROP),
-        Kind::Sprite(_) => property == T::CROP,
-        Kind::Texture2D(_) => property == T::COLOR,
-        Kind::VertexBuffer(_) => matches!(property, T::ALPHA | T::COLOR),
-        Kind::Mesh(m) => property == T::MORPH_WEIGHTS && m.ext.is_morphing(),
+        Kind::Background(_) => matches!(property, P::Alpha | P::Color | P::Crop),
+        Kind::Sprite(_) => property == P::Crop,
+        Kind::Texture2D(_) => property == P::Color,
+        Kind::VertexBuffer(_) => matches!(property, P::Alpha | P::Color),
+        Kind::Mesh(m) => property == P::MorphWeights && m.ext.is_morphing(),
         _ => false,
     }
 }
@@ -324,7 +293,7 @@ fn span_to_world(span: f64) -> i32 {
 
 /// One property's blended value: per-component Σ wᵢ·vᵢ.
 struct Blend {
-    property: i32,
+    property: P,
     value: Vec<f64>,
 }
 
@@ -437,8 +406,7 @@ fn round_i(v: f64, lo: i32, hi: i32) -> i32 {
 const TINY: f32 = f32::MIN_POSITIVE;
 
 /// Writes one blended property value into `obj`, mapped to its valid range (never fails).
-fn apply(obj: &ObjRef, property: i32, v: &[f64]) {
-    type T = AnimationTrack;
+fn apply(obj: &ObjRef, property: P, v: &[f64]) {
     let mut i = obj.borrow_mut();
     let i = &mut *i;
     if let Some(t) = &i.tf {
@@ -446,11 +414,11 @@ fn apply(obj: &ObjRef, property: i32, v: &[f64]) {
         t.cache.invalidate();
     }
     match property {
-        T::TRANSLATION if i.tf.is_some() => {
+        P::Translation if i.tf.is_some() => {
             i.tf.as_mut().unwrap().translation = Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32);
             return;
         }
-        T::SCALE if i.tf.is_some() => {
+        P::Scale if i.tf.is_some() => {
             let s = if v.len() >= 3 {
                 Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32)
             } else {
@@ -459,7 +427,7 @@ fn apply(obj: &ObjRef, property: i32, v: &[f64]) {
             i.tf.as_mut().unwrap().scale = s;
             return;
         }
-        T::ORIENTATION if i.tf.is_some() => {
+        P::Orientation if i.tf.is_some() => {
             let len = v.iter().map(|x| x * x).sum::<f64>().sqrt();
             // A zero (or non-finite) blended quaternion cannot be normalized: identity.
             let q = if len > 1e-30 && len.is_finite() {
@@ -475,11 +443,11 @@ fn apply(obj: &ObjRef, property: i32, v: &[f64]) {
             i.tf.as_mut().unwrap().orientation = q;
             return;
         }
-        T::ALPHA | T::PICKABILITY | T::VISIBILITY if i.node.is_some() => {
+        P::Alpha | P::Pickability | P::Visibility if i.node.is_some() => {
             let n = i.node.as_mut().unwrap();
             match property {
-                T::ALPHA => n.alpha = unit(v[0]) as f32,
-                T::PICKABILITY => n.picking = v[0] >= 0.5,
+                P::Alpha => n.alpha = unit(v[0]) as f32,
+                P::Pickability => n.picking = v[0] >= 0.5,
                 _ => n.rendering = v[0] >= 0.5,
             }
             return;
@@ -488,14 +456,14 @@ fn apply(obj: &ObjRef, property: i32, v: &[f64]) {
     }
     match &mut i.kind {
         Kind::Camera(c) => {
-            let persp = c.projection == Camera::PERSPECTIVE;
-            if c.projection == Camera::GENERIC {
+            let persp = c.projection == Projection::Perspective;
+            if c.projection == Projection::Generic {
                 return;
             }
             let x = v[0] as f32;
             let positive = |x: f32| if x > 0.0 { x } else { TINY };
             match property {
-                T::FIELD_OF_VIEW if persp => {
+                P::FieldOfView if persp => {
                     c.params[0] = if x.is_nan() || x <= 0.0 {
                         TINY
                     } else if x >= 180.0 {
@@ -504,41 +472,41 @@ fn apply(obj: &ObjRef, property: i32, v: &[f64]) {
                         x
                     }
                 }
-                T::FIELD_OF_VIEW => c.params[0] = positive(x),
-                T::NEAR_DISTANCE if persp => c.params[2] = positive(x),
-                T::NEAR_DISTANCE => c.params[2] = x,
-                T::FAR_DISTANCE if persp => c.params[3] = positive(x),
-                T::FAR_DISTANCE => c.params[3] = x,
+                P::FieldOfView => c.params[0] = positive(x),
+                P::NearDistance if persp => c.params[2] = positive(x),
+                P::NearDistance => c.params[2] = x,
+                P::FarDistance if persp => c.params[3] = positive(x),
+                P::FarDistance => c.params[3] = x,
                 _ => {}
             }
         }
         Kind::Light(l) => match property {
-            T::COLOR => l.color = set_rgb(l.color, v) & 0xFF_FFFF,
-            T::INTENSITY => l.intensity = v[0] as f32,
-            T::SPOT_ANGLE => l.spot_angle = clamp_f(v[0], 0.0, 90.0),
-            T::SPOT_EXPONENT => l.spot_exponent = clamp_f(v[0], 0.0, 128.0),
+            P::Color => l.color = set_rgb(l.color, v) & 0xFF_FFFF,
+            P::Intensity => l.intensity = v[0] as f32,
+            P::SpotAngle => l.spot_angle = clamp_f(v[0], 0.0, 90.0),
+            P::SpotExponent => l.spot_exponent = clamp_f(v[0], 0.0, 128.0),
             _ => {}
         },
         Kind::Material(m) => match property {
-            T::ALPHA => m.diffuse = set_alpha(m.diffuse, v[0]),
-            T::AMBIENT_COLOR => m.ambient = set_rgb(m.ambient, v) & 0xFF_FFFF,
-            T::DIFFUSE_COLOR => m.diffuse = set_rgb(m.diffuse, v),
-            T::EMISSIVE_COLOR => m.emissive = set_rgb(m.emissive, v) & 0xFF_FFFF,
-            T::SPECULAR_COLOR => m.specular = set_rgb(m.specular, v) & 0xFF_FFFF,
-            T::SHININESS => m.shininess = clamp_f(v[0], 0.0, 128.0),
+            P::Alpha => m.diffuse = set_alpha(m.diffuse, v[0]),
+            P::AmbientColor => m.ambient = set_rgb(m.ambient, v) & 0xFF_FFFF,
+            P::DiffuseColor => m.diffuse = set_rgb(m.diffuse, v),
+            P::EmissiveColor => m.emissive = set_rgb(m.emissive, v) & 0xFF_FFFF,
+            P::SpecularColor => m.specular = set_rgb(m.specular, v) & 0xFF_FFFF,
+            P::Shininess => m.shininess = clamp_f(v[0], 0.0, 128.0),
             _ => {}
         },
         Kind::Fog(f) => match property {
-            T::COLOR => f.color = set_rgb(f.color, v) & 0xFF_FFFF,
-            T::DENSITY => f.density = clamp_f(v[0], 0.0, f64::MAX),
-            T::NEAR_DISTANCE => f.near = v[0] as f32,
-            T::FAR_DISTANCE => f.far = v[0] as f32,
+            P::Color => f.color = set_rgb(f.color, v) & 0xFF_FFFF,
+            P::Density => f.density = clamp_f(v[0], 0.0, f64::MAX),
+            P::NearDistance => f.near = v[0] as f32,
+            P::FarDistance => f.far = v[0] as f32,
             _ => {}
         },
         Kind::Background(b) => match property {
-            T::ALPHA => b.color = set_alpha(b.color, v[0]),
-            T::COLOR => b.color = set_rgb(b.color, v),
-            T::CROP => {
+            P::Alpha => b.color = set_alpha(b.color, v[0]),
+            P::Color => b.color = set_rgb(b.color, v),
+            P::Crop => {
                 let big = i32::MAX / 2;
                 b.crop[0] = round_i(v[0], -big, big);
                 b.crop[1] = round_i(v[1], -big, big);
@@ -549,7 +517,7 @@ fn apply(obj: &ObjRef, property: i32, v: &[f64]) {
             }
             _ => {}
         },
-        Kind::Sprite(s) if property == T::CROP => {
+        Kind::Sprite(s) if property == P::Crop => {
             let big = i32::MAX / 2;
             let n = MAX_SPRITE_CROP_DIMENSION;
             s.crop[0] = round_i(v[0], -big, big);
@@ -559,15 +527,15 @@ fn apply(obj: &ObjRef, property: i32, v: &[f64]) {
                 s.crop[3] = round_i(v[3], -n, n);
             }
         }
-        Kind::Texture2D(t) if property == T::COLOR => {
+        Kind::Texture2D(t) if property == P::Color => {
             t.blend_color = set_rgb(t.blend_color, v) & 0xFF_FFFF;
         }
         Kind::VertexBuffer(vb) => match property {
-            T::ALPHA => vb.default_color = set_alpha(vb.default_color, v[0]),
-            T::COLOR => vb.default_color = set_rgb(vb.default_color, v),
+            P::Alpha => vb.default_color = set_alpha(vb.default_color, v[0]),
+            P::Color => vb.default_color = set_rgb(vb.default_color, v),
             _ => {}
         },
-        Kind::Mesh(m) if property == T::MORPH_WEIGHTS => {
+        Kind::Mesh(m) if property == P::MorphWeights => {
             if let Some(w) = m.ext.morph_weights_mut() {
                 for (k, x) in w.iter_mut().enumerate() {
                     *x = v.get(k).map_or(0.0, |&y| y as f32);

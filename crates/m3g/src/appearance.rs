@@ -4,11 +4,16 @@
 use glam::Vec4;
 
 use gles_cm_core::state::{AlphaTest, Blend, BlendFactor, Material as CoreMaterial, Quality};
-use gles_cm_core::texenv::{self, EnvMode, FogMode, TexEnv};
-use gles_cm_core::{CompareFunc, CullFace, RenderState, ShadeModel, Winding};
+use gles_cm_core::texenv::{self, EnvMode, FogMode as CoreFogMode, TexEnv};
+use gles_cm_core::{CompareFunc, CullFace, RenderState, ShadeModel, Winding as CoreWinding};
 
+use super::color::Color;
 use super::error::{iae, ioobe, Result};
 use super::image::Image2D;
+use super::modes::{
+    Blending, Culling, FogMode, ImageFormat, ImageMode, MaterialColor, Shading, TextureFilter,
+    TextureFunction, TextureWrap, Winding,
+};
 use super::object::{class_data, handle, Inner, Kind, TransformableExt};
 use super::vertex::NUM_TEXTURE_UNITS;
 
@@ -40,6 +45,28 @@ impl Default for Appearance {
 
 impl Appearance {
     /// `Appearance()`: layer 0, every component `None`.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// // Lit, half-transparent, drawn from both sides.
+    /// let material = Material::new();
+    /// material.set_color(MaterialColor::DIFFUSE, Color::argb(128, 255, 200, 0))?;
+    /// material.set_color(MaterialColor::AMBIENT | MaterialColor::SPECULAR, Color::WHITE)?;
+    /// let blend = CompositingMode::new();
+    /// blend.set_blending(Blending::Alpha);
+    /// let sides = PolygonMode::new();
+    /// sides.set_culling(Culling::None);
+    /// let look = Appearance::new();
+    /// look.set_material(Some(&material));
+    /// look.set_compositing_mode(Some(&blend));
+    /// look.set_polygon_mode(Some(&sides));
+    /// look.set_layer(1)?; // drawn after layer 0
+    /// assert_eq!(look.material().unwrap().color(MaterialColor::AMBIENT)?, Color(0x00FFFFFF));
+    /// # Ok(())
+    /// # }
+    /// ```
     pub fn new() -> Appearance {
         Appearance(Inner::new(
             Kind::Appearance(AppearanceData::default()),
@@ -91,26 +118,26 @@ impl Appearance {
     pub fn fog(&self) -> Option<Fog> {
         self.d().fog.clone()
     }
-    /// `setTexture(unit, t)`: IndexOutOfBounds for a unit outside [0, numTextureUnits).
-    pub fn set_texture(&self, unit: i32, t: Option<&Texture2D>) -> Result<()> {
-        if unit < 0 || unit as usize >= NUM_TEXTURE_UNITS {
+    /// `setTexture(unit, t)`: IndexOutOfBounds unless `unit < NUM_TEXTURE_UNITS`.
+    pub fn set_texture(&self, unit: usize, t: Option<&Texture2D>) -> Result<()> {
+        if unit >= NUM_TEXTURE_UNITS {
             return ioobe("texture unit index");
         }
-        self.dm().textures[unit as usize] = t.cloned();
+        self.dm().textures[unit] = t.cloned();
         Ok(())
     }
     /// `getTexture(unit)`: IndexOutOfBounds for a bad unit.
-    pub fn texture(&self, unit: i32) -> Result<Option<Texture2D>> {
-        if unit < 0 || unit as usize >= NUM_TEXTURE_UNITS {
+    pub fn texture(&self, unit: usize) -> Result<Option<Texture2D>> {
+        if unit >= NUM_TEXTURE_UNITS {
             return ioobe("texture unit index");
         }
-        Ok(self.d().textures[unit as usize].clone())
+        Ok(self.d().textures[unit].clone())
     }
 }
 
 #[derive(Clone, Debug)]
 pub(crate) struct CompositingModeData {
-    pub blending: i32,
+    pub blending: Blending,
     pub alpha_threshold: f32,
     pub depth_offset: [f32; 2],
     pub depth_test: bool,
@@ -133,22 +160,11 @@ impl Default for CompositingMode {
 }
 
 impl CompositingMode {
-    /// Cd = Cs·As + Cd·(1 − As).
-    pub const ALPHA: i32 = 64;
-    /// Cd = Cs·As + Cd.
-    pub const ALPHA_ADD: i32 = 65;
-    /// Cd = Cs·Cd.
-    pub const MODULATE: i32 = 66;
-    /// Cd = 2·Cs·Cd.
-    pub const MODULATE_X2: i32 = 67;
-    /// Cd = Cs.
-    pub const REPLACE: i32 = 68;
-
     /// `CompositingMode()`: REPLACE, threshold 0, no offset, every test and write enabled.
     pub fn new() -> CompositingMode {
         CompositingMode(Inner::new(
             Kind::CompositingMode(CompositingModeData {
-                blending: CompositingMode::REPLACE,
+                blending: Blending::Replace,
                 alpha_threshold: 0.0,
                 depth_offset: [0.0; 2],
                 depth_test: true,
@@ -160,16 +176,12 @@ impl CompositingMode {
             false,
         ))
     }
-    /// `setBlending(mode)`: IllegalArgument unless one of the five modes.
-    pub fn set_blending(&self, mode: i32) -> Result<()> {
-        if !(CompositingMode::ALPHA..=CompositingMode::REPLACE).contains(&mode) {
-            return iae("invalid blending mode");
-        }
+    /// `setBlending(mode)`.
+    pub fn set_blending(&self, mode: Blending) {
         self.dm().blending = mode;
-        Ok(())
     }
     /// `getBlending()`.
-    pub fn blending(&self) -> i32 {
+    pub fn blending(&self) -> Blending {
         self.d().blending
     }
     /// `setAlphaThreshold(t)`: fragments with alpha < t are dropped. IllegalArgument unless
@@ -233,9 +245,9 @@ impl CompositingMode {
 
 #[derive(Clone, Debug)]
 pub(crate) struct PolygonModeData {
-    pub culling: i32,
-    pub winding: i32,
-    pub shading: i32,
+    pub culling: Culling,
+    pub winding: Winding,
+    pub shading: Shading,
     pub two_sided: bool,
     pub local_camera: bool,
     pub perspective: bool,
@@ -255,28 +267,13 @@ impl Default for PolygonMode {
 }
 
 impl PolygonMode {
-    /// Cull back faces.
-    pub const CULL_BACK: i32 = 160;
-    /// Cull front faces.
-    pub const CULL_FRONT: i32 = 161;
-    /// Cull nothing.
-    pub const CULL_NONE: i32 = 162;
-    /// Flat shading (the third vertex's color).
-    pub const SHADE_FLAT: i32 = 164;
-    /// Smooth shading.
-    pub const SHADE_SMOOTH: i32 = 165;
-    /// Counter-clockwise polygons are front faces.
-    pub const WINDING_CCW: i32 = 168;
-    /// Clockwise polygons are front faces.
-    pub const WINDING_CW: i32 = 169;
-
     /// `PolygonMode()`: CULL_BACK, WINDING_CCW, SHADE_SMOOTH, every flag off.
     pub fn new() -> PolygonMode {
         PolygonMode(Inner::new(
             Kind::PolygonMode(PolygonModeData {
-                culling: PolygonMode::CULL_BACK,
-                winding: PolygonMode::WINDING_CCW,
-                shading: PolygonMode::SHADE_SMOOTH,
+                culling: Culling::Back,
+                winding: Winding::Ccw,
+                shading: Shading::Smooth,
                 two_sided: false,
                 local_camera: false,
                 perspective: false,
@@ -285,40 +282,28 @@ impl PolygonMode {
             false,
         ))
     }
-    /// `setCulling(mode)`: IllegalArgument unless CULL_BACK, CULL_FRONT or CULL_NONE.
-    pub fn set_culling(&self, mode: i32) -> Result<()> {
-        if !(PolygonMode::CULL_BACK..=PolygonMode::CULL_NONE).contains(&mode) {
-            return iae("invalid culling mode");
-        }
+    /// `setCulling(mode)`.
+    pub fn set_culling(&self, mode: Culling) {
         self.dm().culling = mode;
-        Ok(())
     }
     /// `getCulling()`.
-    pub fn culling(&self) -> i32 {
+    pub fn culling(&self) -> Culling {
         self.d().culling
     }
-    /// `setWinding(mode)`: IllegalArgument unless WINDING_CCW or WINDING_CW.
-    pub fn set_winding(&self, mode: i32) -> Result<()> {
-        if !(PolygonMode::WINDING_CCW..=PolygonMode::WINDING_CW).contains(&mode) {
-            return iae("invalid winding");
-        }
+    /// `setWinding(mode)`.
+    pub fn set_winding(&self, mode: Winding) {
         self.dm().winding = mode;
-        Ok(())
     }
     /// `getWinding()`.
-    pub fn winding(&self) -> i32 {
+    pub fn winding(&self) -> Winding {
         self.d().winding
     }
-    /// `setShading(mode)`: IllegalArgument unless SHADE_FLAT or SHADE_SMOOTH.
-    pub fn set_shading(&self, mode: i32) -> Result<()> {
-        if mode != PolygonMode::SHADE_FLAT && mode != PolygonMode::SHADE_SMOOTH {
-            return iae("invalid shading");
-        }
+    /// `setShading(mode)`.
+    pub fn set_shading(&self, mode: Shading) {
         self.dm().shading = mode;
-        Ok(())
     }
     /// `getShading()`.
-    pub fn shading(&self) -> i32 {
+    pub fn shading(&self) -> Shading {
         self.d().shading
     }
     /// `setTwoSidedLightingEnable(b)`.
@@ -371,15 +356,6 @@ impl Default for Material {
 }
 
 impl Material {
-    /// The ambient color (a bit flag).
-    pub const AMBIENT: i32 = 1024;
-    /// The diffuse color (a bit flag).
-    pub const DIFFUSE: i32 = 2048;
-    /// The emissive color (a bit flag).
-    pub const EMISSIVE: i32 = 4096;
-    /// The specular color (a bit flag).
-    pub const SPECULAR: i32 = 8192;
-
     /// `Material()`: ambient 0.2, diffuse 0.8 (alpha 1), emissive and specular 0,
     /// shininess 0, no vertex color tracking.
     pub fn new() -> Material {
@@ -396,39 +372,38 @@ impl Material {
             false,
         ))
     }
-    /// `setColor(target, ARGB)`: `target` is an OR of the four flags; alpha is kept only for
-    /// DIFFUSE. IllegalArgument for 0 or other bits.
-    pub fn set_color(&self, target: i32, argb: i32) -> Result<()> {
-        let all = Material::AMBIENT | Material::DIFFUSE | Material::EMISSIVE | Material::SPECULAR;
-        if target == 0 || target & !all != 0 {
+    /// `setColor(target, ARGB)`: `target` is one or more flags ORed; alpha is kept only
+    /// for DIFFUSE. IllegalArgument for no flag.
+    pub fn set_color(&self, target: MaterialColor, color: Color) -> Result<()> {
+        if target.is_empty() {
             return iae("invalid color target");
         }
-        let c = argb as u32;
+        let c = color.0;
         let mut d = self.dm();
-        if target & Material::AMBIENT != 0 {
+        if target.contains(MaterialColor::AMBIENT) {
             d.ambient = c & 0xFF_FFFF;
         }
-        if target & Material::DIFFUSE != 0 {
+        if target.contains(MaterialColor::DIFFUSE) {
             d.diffuse = c;
         }
-        if target & Material::EMISSIVE != 0 {
+        if target.contains(MaterialColor::EMISSIVE) {
             d.emissive = c & 0xFF_FFFF;
         }
-        if target & Material::SPECULAR != 0 {
+        if target.contains(MaterialColor::SPECULAR) {
             d.specular = c & 0xFF_FFFF;
         }
         Ok(())
     }
     /// `getColor(target)`: IllegalArgument unless exactly one flag.
-    pub fn color(&self, target: i32) -> Result<i32> {
+    pub fn color(&self, target: MaterialColor) -> Result<Color> {
         let d = self.d();
-        Ok(match target {
-            Material::AMBIENT => d.ambient,
-            Material::DIFFUSE => d.diffuse,
-            Material::EMISSIVE => d.emissive,
-            Material::SPECULAR => d.specular,
+        Ok(Color(match target {
+            MaterialColor::AMBIENT => d.ambient,
+            MaterialColor::DIFFUSE => d.diffuse,
+            MaterialColor::EMISSIVE => d.emissive,
+            MaterialColor::SPECULAR => d.specular,
             _ => return iae("invalid color target"),
-        } as i32)
+        }))
     }
     /// `setShininess(s)`: IllegalArgument unless 0 ≤ s ≤ 128.
     pub fn set_shininess(&self, s: f32) -> Result<()> {
@@ -454,7 +429,7 @@ impl Material {
 
 #[derive(Clone, Debug)]
 pub(crate) struct FogData {
-    pub mode: i32,
+    pub mode: FogMode,
     pub density: f32,
     pub near: f32,
     pub far: f32,
@@ -475,16 +450,11 @@ impl Default for Fog {
 }
 
 impl Fog {
-    /// f = e^(−density·z).
-    pub const EXPONENTIAL: i32 = 80;
-    /// f = (far − z) / (far − near).
-    pub const LINEAR: i32 = 81;
-
     /// `Fog()`: LINEAR, density 1, near 0, far 1, color black.
     pub fn new() -> Fog {
         Fog(Inner::new(
             Kind::Fog(FogData {
-                mode: Fog::LINEAR,
+                mode: FogMode::Linear,
                 density: 1.0,
                 near: 0.0,
                 far: 1.0,
@@ -494,16 +464,12 @@ impl Fog {
             false,
         ))
     }
-    /// `setMode(mode)`: IllegalArgument unless LINEAR or EXPONENTIAL.
-    pub fn set_mode(&self, mode: i32) -> Result<()> {
-        if mode != Fog::LINEAR && mode != Fog::EXPONENTIAL {
-            return iae("invalid fog mode");
-        }
+    /// `setMode(mode)`.
+    pub fn set_mode(&self, mode: FogMode) {
         self.dm().mode = mode;
-        Ok(())
     }
     /// `getMode()`.
-    pub fn mode(&self) -> i32 {
+    pub fn mode(&self) -> FogMode {
         self.d().mode
     }
     /// `setLinear(near, far)`: any values (it does not change the mode).
@@ -532,23 +498,23 @@ impl Fog {
     pub fn density(&self) -> f32 {
         self.d().density
     }
-    /// `setColor(RGB)`: the top byte is ignored.
-    pub fn set_color(&self, rgb: i32) {
-        self.dm().color = rgb as u32 & 0xFF_FFFF;
+    /// `setColor(RGB)`: the alpha byte is ignored.
+    pub fn set_color(&self, rgb: Color) {
+        self.dm().color = rgb.0 & 0xFF_FFFF;
     }
     /// `getColor()`: 0x00RRGGBB.
-    pub fn color(&self) -> i32 {
-        self.d().color as i32
+    pub fn color(&self) -> Color {
+        Color(self.d().color)
     }
 }
 
 #[derive(Clone, Debug)]
 pub(crate) struct TextureData {
     pub image: Image2D,
-    pub wrap: [i32; 2],
-    pub level_filter: i32,
-    pub image_filter: i32,
-    pub blending: i32,
+    pub wrap: [TextureWrap; 2],
+    pub level_filter: TextureFilter,
+    pub image_filter: TextureFilter,
+    pub blending: TextureFunction,
     pub blend_color: u32,
 }
 
@@ -573,39 +539,38 @@ fn check_texture_image(image: &Image2D) -> Result<()> {
 }
 
 impl Texture2D {
-    /// Filter: the base level only.
-    pub const FILTER_BASE_LEVEL: i32 = 208;
-    /// Filter: linear.
-    pub const FILTER_LINEAR: i32 = 209;
-    /// Filter: nearest.
-    pub const FILTER_NEAREST: i32 = 210;
-    /// Blending: add.
-    pub const FUNC_ADD: i32 = 224;
-    /// Blending: blend with the blend color.
-    pub const FUNC_BLEND: i32 = 225;
-    /// Blending: decal.
-    pub const FUNC_DECAL: i32 = 226;
-    /// Blending: modulate.
-    pub const FUNC_MODULATE: i32 = 227;
-    /// Blending: replace.
-    pub const FUNC_REPLACE: i32 = 228;
-    /// Wrapping: clamp to [0, 1].
-    pub const WRAP_CLAMP: i32 = 240;
-    /// Wrapping: repeat.
-    pub const WRAP_REPEAT: i32 = 241;
-
     /// `Texture2D(image)`: IllegalArgument unless both dimensions are powers of two no
     /// larger than `maxTextureDimension`. Defaults: REPEAT, BASE_LEVEL + NEAREST, MODULATE,
     /// blend color black.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// // A 2 × 2 checkerboard from an image buffer, repeated, filtered, modulating the color.
+    /// let checker = image::RgbImage::from_fn(2, 2, |x, y| {
+    ///     image::Rgb(if (x + y) % 2 == 0 { [255; 3] } else { [0; 3] })
+    /// });
+    /// let texture = Texture2D::new(&Image2D::try_from(&checker)?)?;
+    /// texture.set_filtering(TextureFilter::BaseLevel, TextureFilter::Linear)?;
+    /// texture.set_wrapping(TextureWrap::Repeat, TextureWrap::Clamp);
+    /// texture.set_blending(TextureFunction::Modulate);
+    /// texture.set_scale(4.0, 4.0, 1.0); // the texture transform: 4 repeats
+    /// let look = Appearance::new();
+    /// look.set_texture(0, Some(&texture))?;
+    /// assert!(Texture2D::new(&Image2D::new(ImageFormat::Rgb, 3, 2)?).is_err()); // not 2ⁿ
+    /// # Ok(())
+    /// # }
+    /// ```
     pub fn new(image: &Image2D) -> Result<Texture2D> {
         check_texture_image(image)?;
         Ok(Texture2D(Inner::new(
             Kind::Texture2D(TextureData {
                 image: image.clone(),
-                wrap: [Texture2D::WRAP_REPEAT; 2],
-                level_filter: Texture2D::FILTER_BASE_LEVEL,
-                image_filter: Texture2D::FILTER_NEAREST,
-                blending: Texture2D::FUNC_MODULATE,
+                wrap: [TextureWrap::Repeat; 2],
+                level_filter: TextureFilter::BaseLevel,
+                image_filter: TextureFilter::Nearest,
+                blending: TextureFunction::Modulate,
                 blend_color: 0,
             }),
             true,
@@ -622,13 +587,11 @@ impl Texture2D {
     pub fn image(&self) -> Image2D {
         self.d().image.clone()
     }
-    /// `setFiltering(levelFilter, imageFilter)`: IllegalArgument for a level filter other
-    /// than the three, or an image filter other than LINEAR and NEAREST.
-    pub fn set_filtering(&self, level: i32, image: i32) -> Result<()> {
-        if !(Texture2D::FILTER_BASE_LEVEL..=Texture2D::FILTER_NEAREST).contains(&level)
-            || !(Texture2D::FILTER_LINEAR..=Texture2D::FILTER_NEAREST).contains(&image)
-        {
-            return iae("invalid filter");
+    /// `setFiltering(levelFilter, imageFilter)`: IllegalArgument for an image filter other
+    /// than LINEAR and NEAREST.
+    pub fn set_filtering(&self, level: TextureFilter, image: TextureFilter) -> Result<()> {
+        if image == TextureFilter::BaseLevel {
+            return iae("invalid image filter");
         }
         let mut d = self.dm();
         d.level_filter = level;
@@ -636,49 +599,40 @@ impl Texture2D {
         Ok(())
     }
     /// `getLevelFilter()`.
-    pub fn level_filter(&self) -> i32 {
+    pub fn level_filter(&self) -> TextureFilter {
         self.d().level_filter
     }
     /// `getImageFilter()`.
-    pub fn image_filter(&self) -> i32 {
+    pub fn image_filter(&self) -> TextureFilter {
         self.d().image_filter
     }
-    /// `setWrapping(s, t)`: IllegalArgument unless each is WRAP_CLAMP or WRAP_REPEAT.
-    pub fn set_wrapping(&self, s: i32, t: i32) -> Result<()> {
-        let ok = |w: i32| w == Texture2D::WRAP_CLAMP || w == Texture2D::WRAP_REPEAT;
-        if !ok(s) || !ok(t) {
-            return iae("invalid wrapping");
-        }
+    /// `setWrapping(s, t)`.
+    pub fn set_wrapping(&self, s: TextureWrap, t: TextureWrap) {
         self.dm().wrap = [s, t];
-        Ok(())
     }
     /// `getWrappingS()`.
-    pub fn wrapping_s(&self) -> i32 {
+    pub fn wrapping_s(&self) -> TextureWrap {
         self.d().wrap[0]
     }
     /// `getWrappingT()`.
-    pub fn wrapping_t(&self) -> i32 {
+    pub fn wrapping_t(&self) -> TextureWrap {
         self.d().wrap[1]
     }
-    /// `setBlending(func)`: IllegalArgument unless one of the five FUNC_ values.
-    pub fn set_blending(&self, func: i32) -> Result<()> {
-        if !(Texture2D::FUNC_ADD..=Texture2D::FUNC_REPLACE).contains(&func) {
-            return iae("invalid texture blending");
-        }
+    /// `setBlending(func)`.
+    pub fn set_blending(&self, func: TextureFunction) {
         self.dm().blending = func;
-        Ok(())
     }
     /// `getBlending()`.
-    pub fn blending(&self) -> i32 {
+    pub fn blending(&self) -> TextureFunction {
         self.d().blending
     }
-    /// `setBlendColor(RGB)`: the top byte is ignored.
-    pub fn set_blend_color(&self, rgb: i32) {
-        self.dm().blend_color = rgb as u32 & 0xFF_FFFF;
+    /// `setBlendColor(RGB)`: the alpha byte is ignored.
+    pub fn set_blend_color(&self, rgb: Color) {
+        self.dm().blend_color = rgb.0 & 0xFF_FFFF;
     }
     /// `getBlendColor()`: 0x00RRGGBB.
-    pub fn blend_color(&self) -> i32 {
-        self.d().blend_color as i32
+    pub fn blend_color(&self) -> Color {
+        Color(self.d().blend_color)
     }
 }
 
@@ -688,7 +642,7 @@ pub(crate) struct BackgroundData {
     pub depth_clear: bool,
     pub color: u32,
     pub image: Option<Image2D>,
-    pub mode: [i32; 2],
+    pub mode: [ImageMode; 2],
     pub crop: [i32; 4],
 }
 
@@ -706,11 +660,6 @@ impl Default for Background {
 }
 
 impl Background {
-    /// Outside the image: the background color.
-    pub const BORDER: i32 = 32;
-    /// Outside the image: the image repeated.
-    pub const REPEAT: i32 = 33;
-
     /// `Background()`: color and depth clears on, color transparent black, no image,
     /// BORDER modes.
     pub fn new() -> Background {
@@ -720,7 +669,7 @@ impl Background {
                 depth_clear: true,
                 color: 0,
                 image: None,
-                mode: [Background::BORDER; 2],
+                mode: [ImageMode::Border; 2],
                 crop: [0; 4],
             }),
             false,
@@ -744,19 +693,19 @@ impl Background {
         self.d().depth_clear
     }
     /// `setColor(ARGB)`.
-    pub fn set_color(&self, argb: i32) {
-        self.dm().color = argb as u32;
+    pub fn set_color(&self, argb: Color) {
+        self.dm().color = argb.0;
     }
     /// `getColor()`.
-    pub fn color(&self) -> i32 {
-        self.d().color as i32
+    pub fn color(&self) -> Color {
+        Color(self.d().color)
     }
     /// `setImage(image)`: resets the crop to the whole image. IllegalArgument unless the
     /// image is RGB or RGBA.
     pub fn set_image(&self, image: Option<&Image2D>) -> Result<()> {
         if let Some(i) = image {
             let f = i.format();
-            if f != Image2D::RGB && f != Image2D::RGBA {
+            if f != ImageFormat::Rgb && f != ImageFormat::Rgba {
                 return iae("background images must be RGB or RGBA");
             }
         }
@@ -771,21 +720,16 @@ impl Background {
     pub fn image(&self) -> Option<Image2D> {
         self.d().image.clone()
     }
-    /// `setImageMode(modeX, modeY)`: IllegalArgument unless each is BORDER or REPEAT.
-    pub fn set_image_mode(&self, mode_x: i32, mode_y: i32) -> Result<()> {
-        let ok = |m: i32| m == Background::BORDER || m == Background::REPEAT;
-        if !ok(mode_x) || !ok(mode_y) {
-            return iae("invalid image mode");
-        }
+    /// `setImageMode(modeX, modeY)`.
+    pub fn set_image_mode(&self, mode_x: ImageMode, mode_y: ImageMode) {
         self.dm().mode = [mode_x, mode_y];
-        Ok(())
     }
     /// `getImageModeX()`.
-    pub fn image_mode_x(&self) -> i32 {
+    pub fn image_mode_x(&self) -> ImageMode {
         self.d().mode[0]
     }
     /// `getImageModeY()`.
-    pub fn image_mode_y(&self) -> i32 {
+    pub fn image_mode_y(&self) -> ImageMode {
         self.d().mode[1]
     }
     /// `setCrop(x, y, width, height)`: IllegalArgument for a negative width or height.
@@ -840,23 +784,15 @@ pub(crate) fn apply_compositing(s: &mut RenderState, cm: Option<&CompositingMode
             d.color_write,
             d.alpha_write,
         ),
-        None => (
-            CompositingMode::REPLACE,
-            0.0,
-            [0.0; 2],
-            true,
-            true,
-            true,
-            true,
-        ),
+        None => (Blending::Replace, 0.0, [0.0; 2], true, true, true, true),
     };
     use BlendFactor::*;
     s.blend = match blending {
-        CompositingMode::ALPHA => Some(Blend::func(SrcAlpha, OneMinusSrcAlpha)),
-        CompositingMode::ALPHA_ADD => Some(Blend::func(SrcAlpha, One)),
-        CompositingMode::MODULATE => Some(Blend::func(DstColor, Zero)),
-        CompositingMode::MODULATE_X2 => Some(Blend::func(DstColor, SrcColor)),
-        _ => None,
+        Blending::Alpha => Some(Blend::func(SrcAlpha, OneMinusSrcAlpha)),
+        Blending::AlphaAdd => Some(Blend::func(SrcAlpha, One)),
+        Blending::Modulate => Some(Blend::func(DstColor, Zero)),
+        Blending::ModulateX2 => Some(Blend::func(DstColor, SrcColor)),
+        Blending::Replace => None,
     };
     if threshold > 0.0 {
         s.alpha_test = Some(AlphaTest {
@@ -892,26 +828,20 @@ pub(crate) fn apply_polygon_mode(s: &mut RenderState, pm: Option<&PolygonMode>) 
             let d = p.d();
             (d.culling, d.winding, d.shading)
         }
-        None => (
-            PolygonMode::CULL_BACK,
-            PolygonMode::WINDING_CCW,
-            PolygonMode::SHADE_SMOOTH,
-        ),
+        None => (Culling::Back, Winding::Ccw, Shading::Smooth),
     };
     s.cull = match culling {
-        PolygonMode::CULL_BACK => Some(CullFace::Back),
-        PolygonMode::CULL_FRONT => Some(CullFace::Front),
-        _ => None,
+        Culling::Back => Some(CullFace::Back),
+        Culling::Front => Some(CullFace::Front),
+        Culling::None => None,
     };
-    s.front_face = if winding == PolygonMode::WINDING_CW {
-        Winding::Cw
-    } else {
-        Winding::Ccw
+    s.front_face = match winding {
+        Winding::Cw => CoreWinding::Cw,
+        Winding::Ccw => CoreWinding::Ccw,
     };
-    s.shade_model = if shading == PolygonMode::SHADE_FLAT {
-        ShadeModel::Flat
-    } else {
-        ShadeModel::Smooth
+    s.shade_model = match shading {
+        Shading::Flat => ShadeModel::Flat,
+        Shading::Smooth => ShadeModel::Smooth,
     };
 }
 
@@ -920,10 +850,9 @@ pub(crate) fn apply_polygon_mode(s: &mut RenderState, pm: Option<&PolygonMode>) 
 pub(crate) fn core_fog(f: &FogData) -> texenv::Fog {
     let [r, g, b, _] = argb_to_rgba(f.color);
     texenv::Fog {
-        mode: if f.mode == Fog::LINEAR {
-            FogMode::Linear
-        } else {
-            FogMode::Exp
+        mode: match f.mode {
+            FogMode::Linear => CoreFogMode::Linear,
+            FogMode::Exponential => CoreFogMode::Exp,
         },
         density: f.density,
         start: f.near,
@@ -957,11 +886,11 @@ pub(crate) fn tex_env(t: &TextureData) -> TexEnv {
     let [r, g, b, _] = argb_to_rgba(t.blend_color);
     TexEnv {
         mode: match t.blending {
-            Texture2D::FUNC_REPLACE => EnvMode::Replace,
-            Texture2D::FUNC_DECAL => EnvMode::Decal,
-            Texture2D::FUNC_BLEND => EnvMode::Blend,
-            Texture2D::FUNC_ADD => EnvMode::Add,
-            _ => EnvMode::Modulate,
+            TextureFunction::Replace => EnvMode::Replace,
+            TextureFunction::Decal => EnvMode::Decal,
+            TextureFunction::Blend => EnvMode::Blend,
+            TextureFunction::Add => EnvMode::Add,
+            TextureFunction::Modulate => EnvMode::Modulate,
         },
         color: [r, g, b, 1.0],
     }

@@ -3,13 +3,14 @@
 use glam::Mat4;
 
 use super::error::{ae, iae, Result};
+use super::modes::Projection;
 use super::node::NodeExt;
 use super::object::{class_data, handle, Inner, Kind, TransformableExt};
 use super::transform::Transform;
 
 #[derive(Clone, Debug)]
 pub(crate) struct CameraData {
-    pub projection: i32,
+    pub projection: Projection,
     /// fovy (or height), aspect, near, far as set.
     pub params: [f32; 4],
     pub matrix: Mat4,
@@ -31,18 +32,28 @@ impl Default for Camera {
 }
 
 impl Camera {
-    /// A projection given as a matrix.
-    pub const GENERIC: i32 = 48;
-    /// A parallel projection.
-    pub const PARALLEL: i32 = 49;
-    /// A perspective projection.
-    pub const PERSPECTIVE: i32 = 50;
-
     /// `Camera()`: GENERIC with the identity matrix.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// let camera = Camera::new();
+    /// camera.set_perspective(60.0, 4.0 / 3.0, 0.1, 100.0)?;
+    /// camera.set_translation(0.0, 1.0, 5.0); // it looks along its −Z
+    /// let world = World::new();
+    /// world.add_child(&camera)?;
+    /// world.set_active_camera(&camera);
+    /// let (kind, params) = camera.get_projection_params();
+    /// assert_eq!(kind, Projection::Perspective);
+    /// assert_eq!(params, Some([60.0, 4.0 / 3.0, 0.1, 100.0]));
+    /// # Ok(())
+    /// # }
+    /// ```
     pub fn new() -> Camera {
         Camera(Inner::new(
             Kind::Camera(CameraData {
-                projection: Camera::GENERIC,
+                projection: Projection::Generic,
                 params: [0.0; 4],
                 matrix: Mat4::IDENTITY,
             }),
@@ -58,7 +69,7 @@ impl Camera {
             return iae("perspective parameters must be positive and fovy < 180");
         }
         let mut d = self.dm();
-        d.projection = Camera::PERSPECTIVE;
+        d.projection = Projection::Perspective;
         d.params = [fovy, aspect, near, far];
         Ok(())
     }
@@ -70,7 +81,7 @@ impl Camera {
             return iae("parallel height and aspect must be positive");
         }
         let mut d = self.dm();
-        d.projection = Camera::PARALLEL;
+        d.projection = Projection::Parallel;
         d.params = [height, aspect, near, far];
         Ok(())
     }
@@ -78,13 +89,13 @@ impl Camera {
     /// `setGeneric(T)`: the matrix is copied.
     pub fn set_generic(&self, t: &Transform) {
         let mut d = self.dm();
-        d.projection = Camera::GENERIC;
+        d.projection = Projection::Generic;
         d.matrix = t.m;
     }
 
     /// `getProjection(Transform)`: the projection type and matrix. Arithmetic for a
     /// PERSPECTIVE or PARALLEL projection with near == far.
-    pub fn get_projection(&self) -> Result<(i32, Transform)> {
+    pub fn get_projection(&self) -> Result<(Projection, Transform)> {
         let kind = self.d().projection;
         match self.projection_matrix() {
             Some(m) => Ok((kind, Transform::from_mat4(m))),
@@ -94,11 +105,11 @@ impl Camera {
 
     /// `getProjection(float[])`: the type and, for PERSPECTIVE and PARALLEL, the parameters
     /// exactly as set ([fovy or height, aspect, near, far]); `None` for GENERIC.
-    pub fn get_projection_params(&self) -> (i32, Option<[f32; 4]>) {
+    pub fn get_projection_params(&self) -> (Projection, Option<[f32; 4]>) {
         let d = self.d();
         (
             d.projection,
-            (d.projection != Camera::GENERIC).then_some(d.params),
+            (d.projection != Projection::Generic).then_some(d.params),
         )
     }
 
@@ -107,9 +118,9 @@ impl Camera {
         let d = self.d();
         let [p, aspect, near, far] = d.params;
         match d.projection {
-            Camera::GENERIC => Some(d.matrix),
+            Projection::Generic => Some(d.matrix),
             _ if near == far => None,
-            Camera::PERSPECTIVE => {
+            Projection::Perspective => {
                 let h = (p.to_radians() * 0.5).tan();
                 let w = aspect * h;
                 let dz = far - near;

@@ -110,7 +110,12 @@ impl Clone for Cache {
 
 /// An array of `n` vertices × `comps` components of `size` bytes, reusing `old` when its
 /// shape matches.
-pub(crate) fn array_like(old: Option<&VertexArray>, n: i32, comps: i32, size: i32) -> VertexArray {
+pub(crate) fn array_like(
+    old: Option<&VertexArray>,
+    n: usize,
+    comps: usize,
+    size: usize,
+) -> VertexArray {
     match old {
         Some(a)
             if a.vertex_count() == n

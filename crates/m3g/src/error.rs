@@ -1,11 +1,25 @@
-//! The error type of every fallible M3G call.
+//! The one error type of the crate: the specification's exception kinds, plus the Loader's
+//! and the writer's failures with their details.
 
 use std::fmt;
 
+pub use super::loader::LoadError;
+
 /// An M3G exception. Each kind is named after the Java exception the specification says the
-/// call throws, so tests (and ports of Java code) can tell them apart.
+/// call throws, so tests (and ports of Java code) can tell them apart; the Loader's
+/// `IOException` carries where in the file it happened ([`LoadError`]).
+///
+/// ```
+/// use m3g::prelude::*;
+///
+/// let e = KeyframeSequence::new(0, 3, Interpolation::Linear).unwrap_err();
+/// assert!(matches!(e, Error::IllegalArgument(_)));
+/// let e = Loader::load(b"not an m3g file").unwrap_err();
+/// assert!(matches!(e, Error::Io(_)));
+/// assert_eq!(e.java_name(), "IOException");
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum M3gError {
+pub enum Error {
     /// `NullPointerException`: a required object is missing.
     NullPointer(String),
     /// `IllegalArgumentException`: an argument is out of its documented range.
@@ -17,56 +31,97 @@ pub enum M3gError {
     IndexOutOfBounds(String),
     /// `ArithmeticException`: a transformation needed is not invertible.
     Arithmetic(String),
+    /// `IOException` from the [`Loader`](crate::Loader): the object, class and field at fault.
+    Io(LoadError),
+    /// The [`writer`](crate::writer) cannot represent the graph in a .m3g file (no Java
+    /// counterpart).
+    Write(String),
 }
 
-impl M3gError {
+impl Error {
     /// The Java exception's simple name, e.g. `"IllegalArgumentException"`.
     pub fn java_name(&self) -> &'static str {
         match self {
-            M3gError::NullPointer(_) => "NullPointerException",
-            M3gError::IllegalArgument(_) => "IllegalArgumentException",
-            M3gError::IllegalState(_) => "IllegalStateException",
-            M3gError::IndexOutOfBounds(_) => "IndexOutOfBoundsException",
-            M3gError::Arithmetic(_) => "ArithmeticException",
+            Error::NullPointer(_) => "NullPointerException",
+            Error::IllegalArgument(_) => "IllegalArgumentException",
+            Error::IllegalState(_) => "IllegalStateException",
+            Error::IndexOutOfBounds(_) => "IndexOutOfBoundsException",
+            Error::Arithmetic(_) => "ArithmeticException",
+            Error::Io(_) | Error::Write(_) => "IOException",
         }
     }
 
-    /// The message.
+    /// The message (for [`Error::Io`], without the location).
     pub fn message(&self) -> &str {
         match self {
-            M3gError::NullPointer(m)
-            | M3gError::IllegalArgument(m)
-            | M3gError::IllegalState(m)
-            | M3gError::IndexOutOfBounds(m)
-            | M3gError::Arithmetic(m) => m,
+            Error::NullPointer(m)
+            | Error::IllegalArgument(m)
+            | Error::IllegalState(m)
+            | Error::IndexOutOfBounds(m)
+            | Error::Arithmetic(m)
+            | Error::Write(m) => m,
+            Error::Io(e) => &e.message,
+        }
+    }
+
+    /// The same kind of error with `context` put before the message.
+    pub(crate) fn context(mut self, context: &str) -> Error {
+        let m = match &mut self {
+            Error::NullPointer(m)
+            | Error::IllegalArgument(m)
+            | Error::IllegalState(m)
+            | Error::IndexOutOfBounds(m)
+            | Error::Arithmetic(m)
+            | Error::Write(m) => m,
+            Error::Io(e) => &mut e.message,
+        };
+        *m = format!("{context}: {m}");
+        self
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            // The location already says what failed; tools print it as it is.
+            Error::Io(e) => e.fmt(f),
+            Error::Write(m) => write!(f, "cannot write .m3g: {m}"),
+            _ => write!(f, "{}: {}", self.java_name(), self.message()),
         }
     }
 }
 
-impl fmt::Display for M3gError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.java_name(), self.message())
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::Io(e) => Some(e),
+            _ => None,
+        }
     }
 }
 
-impl std::error::Error for M3gError {}
+impl From<LoadError> for Error {
+    fn from(e: LoadError) -> Error {
+        Error::Io(e)
+    }
+}
 
 /// The result of a fallible M3G call.
-pub type Result<T> = std::result::Result<T, M3gError>;
+pub type Result<T> = std::result::Result<T, Error>;
 
 pub(crate) fn iae<T>(m: impl Into<String>) -> Result<T> {
-    Err(M3gError::IllegalArgument(m.into()))
+    Err(Error::IllegalArgument(m.into()))
 }
 pub(crate) fn ise<T>(m: impl Into<String>) -> Result<T> {
-    Err(M3gError::IllegalState(m.into()))
+    Err(Error::IllegalState(m.into()))
 }
 pub(crate) fn ioobe<T>(m: impl Into<String>) -> Result<T> {
-    Err(M3gError::IndexOutOfBounds(m.into()))
+    Err(Error::IndexOutOfBounds(m.into()))
 }
 pub(crate) fn ae<T>(m: impl Into<String>) -> Result<T> {
-    Err(M3gError::Arithmetic(m.into()))
+    Err(Error::Arithmetic(m.into()))
 }
 #[allow(dead_code)]
 pub(crate) fn npe<T>(m: impl Into<String>) -> Result<T> {
-    Err(M3gError::NullPointer(m.into()))
+    Err(Error::NullPointer(m.into()))
 }

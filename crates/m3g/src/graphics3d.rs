@@ -25,6 +25,7 @@ use super::error::{iae, ioobe, ise, Result};
 use super::image::Image2D;
 use super::light::Light;
 use super::mesh::MAX_SPRITE_CROP_DIMENSION;
+use super::modes::{ImageFormat, ImageMode, RenderHints};
 use super::node::{node_data, root_of, to_ancestor, NodeExt, World};
 use super::object::{tf, Kind};
 use super::transform::{invert, Transform};
@@ -55,9 +56,9 @@ struct Bound {
     frame: Frame,
     image: Option<Image2D>,
     /// The `Image2D` format the target stands for: a background image must have it.
-    format: i32,
+    format: ImageFormat,
     depth: bool,
-    hints: i32,
+    hints: RenderHints,
 }
 
 /// What rendering has done since the context was made or [`Graphics3D::reset_stats`] was
@@ -135,16 +136,24 @@ thread_local! {
 }
 
 impl Graphics3D {
-    /// Antialiasing hint.
-    pub const ANTIALIAS: i32 = 2;
-    /// Dithering hint.
-    pub const DITHER: i32 = 4;
-    /// High-precision color hint.
-    pub const TRUE_COLOR: i32 = 8;
-    /// The target's previous contents need not be kept.
-    pub const OVERWRITE: i32 = 16;
-
     /// A new, unbound context: depth range [0, 1], no camera, no lights.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// // Clear a mutable RGB image to a background color.
+    /// let image = Image2D::new(ImageFormat::Rgb, 4, 4)?;
+    /// let background = Background::new();
+    /// background.set_color(Color::BLUE);
+    /// let mut g3d = Graphics3D::new();
+    /// g3d.bind_image(&image, true, RenderHints::DITHER)?;
+    /// g3d.clear(Some(&background))?;
+    /// g3d.release_target(); // the frame is written into the image here
+    /// assert_eq!(image.pixels()[..3], [0, 0, 255]);
+    /// # Ok(())
+    /// # }
+    /// ```
     pub fn new() -> Graphics3D {
         Graphics3D {
             bound: None,
@@ -199,24 +208,21 @@ impl Graphics3D {
         INSTANCE.with(|i| i.clone())
     }
 
-    fn check_bind(&self, w: u32, h: u32, hints: i32) -> Result<()> {
+    fn check_bind(&self, w: u32, h: u32) -> Result<()> {
         if self.bound.is_some() {
             return ise("a target is already bound");
         }
         if w as i64 > MAX_VIEWPORT_DIMENSION as i64 || h as i64 > MAX_VIEWPORT_DIMENSION as i64 {
             return iae("target larger than the maximum viewport");
         }
-        if hints & !0x1E != 0 {
-            return iae("invalid hints");
-        }
         Ok(())
     }
 
-    fn bind(&mut self, target: Target, image: Option<Image2D>, depth: bool, hints: i32) {
+    fn bind(&mut self, target: Target, image: Option<Image2D>, depth: bool, hints: RenderHints) {
         let format = match (&image, target.format().color) {
             (Some(i), _) => i.format(),
-            (None, ColorFormat::Rgba8888) => Image2D::RGBA,
-            (None, _) => Image2D::RGB,
+            (None, ColorFormat::Rgba8888) => ImageFormat::Rgba,
+            (None, _) => ImageFormat::Rgb,
         };
         self.bind_as(target, image, format, depth, hints);
     }
@@ -225,9 +231,9 @@ impl Graphics3D {
         &mut self,
         target: Target,
         image: Option<Image2D>,
-        format: i32,
+        format: ImageFormat,
         depth: bool,
-        hints: i32,
+        hints: RenderHints,
     ) {
         let (w, h) = (target.width(), target.height());
         self.viewport = [0, 0, w as i32, h as i32];
@@ -241,12 +247,17 @@ impl Graphics3D {
         });
     }
 
-    /// `bindTarget(image, depthBuffer, hints)` (`bindTarget(image)` is `(image, true, 0)`).
-    /// IllegalState if a target is bound (here or, for this image, anywhere);
-    /// IllegalArgument for an immutable image, a format other than RGB and RGBA, an image
-    /// larger than the maximum viewport, or hints outside ANTIALIAS | DITHER | TRUE_COLOR |
-    /// OVERWRITE. The viewport becomes the whole image.
-    pub fn bind_image(&mut self, image: &Image2D, depth_buffer: bool, hints: i32) -> Result<()> {
+    /// `bindTarget(image, depthBuffer, hints)` (`bindTarget(image)` is
+    /// `(image, true, RenderHints::empty())`). IllegalState if a target is bound (here or,
+    /// for this image, anywhere); IllegalArgument for an immutable image, a format other than
+    /// RGB and RGBA, or an image larger than the maximum viewport. The viewport becomes the
+    /// whole image.
+    pub fn bind_image(
+        &mut self,
+        image: &Image2D,
+        depth_buffer: bool,
+        hints: RenderHints,
+    ) -> Result<()> {
         let d = image.d();
         if d.bound {
             return ise("the image is already bound to a Graphics3D");
@@ -255,11 +266,11 @@ impl Graphics3D {
             return iae("the target image is immutable");
         }
         let color = match d.format {
-            Image2D::RGB => ColorFormat::Rgb888,
-            Image2D::RGBA => ColorFormat::Rgba8888,
+            ImageFormat::Rgb => ColorFormat::Rgb888,
+            ImageFormat::Rgba => ColorFormat::Rgba8888,
             _ => return iae("the target image must be RGB or RGBA"),
         };
-        self.check_bind(d.width as u32, d.height as u32, hints)?;
+        self.check_bind(d.width as u32, d.height as u32)?;
         let (w, h) = (d.width as u32, d.height as u32);
         let mut target = Target::new(
             w,
@@ -289,8 +300,13 @@ impl Graphics3D {
     /// row, so M3G's top-left origin is its top row). The target is moved in and given back
     /// by [`release_target`](Self::release_target). The depth buffer is used only if the
     /// target has one and `depth_buffer` is true.
-    pub fn bind_target(&mut self, target: Target, depth_buffer: bool, hints: i32) -> Result<()> {
-        self.check_bind(target.width(), target.height(), hints)?;
+    pub fn bind_target(
+        &mut self,
+        target: Target,
+        depth_buffer: bool,
+        hints: RenderHints,
+    ) -> Result<()> {
+        self.check_bind(target.width(), target.height())?;
         self.bind(target, None, depth_buffer, hints);
         Ok(())
     }
@@ -303,10 +319,10 @@ impl Graphics3D {
         &mut self,
         target: Target,
         depth_buffer: bool,
-        hints: i32,
+        hints: RenderHints,
     ) -> Result<()> {
-        self.check_bind(target.width(), target.height(), hints)?;
-        self.bind_as(target, None, Image2D::RGB, depth_buffer, hints);
+        self.check_bind(target.width(), target.height())?;
+        self.bind_as(target, None, ImageFormat::Rgb, depth_buffer, hints);
         Ok(())
     }
 
@@ -320,7 +336,7 @@ impl Graphics3D {
                 let mut d = img.dm();
                 d.bound = false;
                 let (w, h) = (d.width as usize, d.height as usize);
-                let bpp = if d.format == Image2D::RGB { 3 } else { 4 };
+                let bpp = if d.format == ImageFormat::Rgb { 3 } else { 4 };
                 for y in 0..h {
                     for x in 0..w {
                         let px = b.target.color()[(h - 1 - y) * w + x].to_le_bytes();
@@ -345,9 +361,11 @@ impl Graphics3D {
         Some(&b.target)
     }
 
-    /// `getHints()`: as given to the bind call (0 when unbound).
-    pub fn hints(&self) -> i32 {
-        self.bound.as_ref().map_or(0, |b| b.hints)
+    /// `getHints()`: as given to the bind call (empty when unbound).
+    pub fn hints(&self) -> RenderHints {
+        self.bound
+            .as_ref()
+            .map_or(RenderHints::empty(), |b| b.hints)
     }
 
     /// `isDepthBufferEnabled()` (false when unbound).
@@ -407,24 +425,24 @@ impl Graphics3D {
 
     /// `addLight(light, transform)`: appends the light with its light-to-world transform
     /// (`None` = identity) and returns its index.
-    pub fn add_light(&mut self, light: &Light, t: Option<&Transform>) -> i32 {
+    pub fn add_light(&mut self, light: &Light, t: Option<&Transform>) -> usize {
         self.lights
             .push(Some((light.clone(), t.map_or(Mat4::IDENTITY, |t| t.m))));
-        self.lights.len() as i32 - 1
+        self.lights.len() - 1
     }
 
     /// `setLight(index, light, transform)`: `None` empties the slot. IndexOutOfBounds for a
     /// bad index.
     pub fn set_light(
         &mut self,
-        index: i32,
+        index: usize,
         light: Option<&Light>,
         t: Option<&Transform>,
     ) -> Result<()> {
-        if index < 0 || index as usize >= self.lights.len() {
+        if index >= self.lights.len() {
             return ioobe("light index");
         }
-        self.lights[index as usize] = light.map(|l| (l.clone(), t.map_or(Mat4::IDENTITY, |t| t.m)));
+        self.lights[index] = light.map(|l| (l.clone(), t.map_or(Mat4::IDENTITY, |t| t.m)));
         Ok(())
     }
 
@@ -434,17 +452,17 @@ impl Graphics3D {
     }
 
     /// `getLightCount()`: including empty slots.
-    pub fn light_count(&self) -> i32 {
-        self.lights.len() as i32
+    pub fn light_count(&self) -> usize {
+        self.lights.len()
     }
 
     /// `getLight(index, transform)`: the light and its transform, `None` for an empty slot.
     /// IndexOutOfBounds for a bad index.
-    pub fn light(&self, index: i32) -> Result<Option<(Light, Transform)>> {
-        if index < 0 || index as usize >= self.lights.len() {
+    pub fn light(&self, index: usize) -> Result<Option<(Light, Transform)>> {
+        if index >= self.lights.len() {
             return ioobe("light index");
         }
-        Ok(self.lights[index as usize]
+        Ok(self.lights[index]
             .as_ref()
             .map(|(l, m)| (l.clone(), Transform::from_mat4(*m))))
     }
@@ -530,7 +548,7 @@ impl Graphics3D {
                     d.crop,
                 )
             }
-            None => (true, true, 0, None, [0; 2], [0; 4]),
+            None => (true, true, 0, None, [ImageMode::Border; 2], [0; 4]),
         };
         let format = b.target.format();
         let bg_rgba = argb_to_rgba(argb);
@@ -542,10 +560,10 @@ impl Graphics3D {
                     let d = img.d();
                     let th = b.target.height() as i32;
                     let tw = b.target.width() as usize;
-                    let pick = |v: i32, n: i32, mode: i32| -> Option<i32> {
+                    let pick = |v: i32, n: i32, mode: ImageMode| -> Option<i32> {
                         if (0..n).contains(&v) {
                             Some(v)
-                        } else if mode == Background::REPEAT {
+                        } else if mode == ImageMode::Repeat {
                             Some(v.rem_euclid(n))
                         } else {
                             None
@@ -688,13 +706,12 @@ impl Graphics3D {
 }
 
 /// The name of an `Image2D` format, for messages.
-fn format_name(format: i32) -> &'static str {
+fn format_name(format: ImageFormat) -> &'static str {
     match format {
-        Image2D::ALPHA => "ALPHA",
-        Image2D::LUMINANCE => "LUMINANCE",
-        Image2D::LUMINANCE_ALPHA => "LUMINANCE_ALPHA",
-        Image2D::RGB => "RGB",
-        Image2D::RGBA => "RGBA",
-        _ => "unknown",
+        ImageFormat::Alpha => "ALPHA",
+        ImageFormat::Luminance => "LUMINANCE",
+        ImageFormat::LuminanceAlpha => "LUMINANCE_ALPHA",
+        ImageFormat::Rgb => "RGB",
+        ImageFormat::Rgba => "RGBA",
     }
 }

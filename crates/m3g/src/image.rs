@@ -1,11 +1,12 @@
 //! `Image2D`.
 
 use super::error::{iae, ise, Result};
+use super::modes::ImageFormat;
 use super::object::{class_data, handle, Inner, Kind};
 
 #[derive(Clone, Debug)]
 pub(crate) struct ImageData {
-    pub format: i32,
+    pub format: ImageFormat,
     pub width: i32,
     pub height: i32,
     pub mutable: bool,
@@ -22,40 +23,33 @@ handle!(
 );
 class_data!(Image2D, Image2D, ImageData);
 
-/// Bytes per pixel of a format, `None` for an invalid format.
-pub(crate) fn bpp(format: i32) -> Option<usize> {
-    match format {
-        Image2D::ALPHA | Image2D::LUMINANCE => Some(1),
-        Image2D::LUMINANCE_ALPHA => Some(2),
-        Image2D::RGB => Some(3),
-        Image2D::RGBA => Some(4),
-        _ => None,
+impl ImageFormat {
+    /// Bytes per pixel.
+    pub fn bytes_per_pixel(self) -> usize {
+        match self {
+            ImageFormat::Alpha | ImageFormat::Luminance => 1,
+            ImageFormat::LuminanceAlpha => 2,
+            ImageFormat::Rgb => 3,
+            ImageFormat::Rgba => 4,
+        }
     }
 }
 
-fn check(format: i32, width: i32, height: i32) -> Result<usize> {
+fn check(format: ImageFormat, width: i32, height: i32) -> Result<usize> {
     if width <= 0 || height <= 0 {
         return iae("width and height must be positive");
     }
-    match bpp(format) {
-        Some(b) => Ok(b),
-        None => iae("invalid image format"),
-    }
+    Ok(format.bytes_per_pixel())
 }
 
 impl Image2D {
-    /// Alpha only.
-    pub const ALPHA: i32 = 96;
-    /// Luminance only.
-    pub const LUMINANCE: i32 = 97;
-    /// Luminance, then alpha.
-    pub const LUMINANCE_ALPHA: i32 = 98;
-    /// Red, green, blue.
-    pub const RGB: i32 = 99;
-    /// Red, green, blue, alpha.
-    pub const RGBA: i32 = 100;
-
-    fn make(format: i32, width: i32, height: i32, mutable: bool, pixels: Vec<u8>) -> Image2D {
+    fn make(
+        format: ImageFormat,
+        width: i32,
+        height: i32,
+        mutable: bool,
+        pixels: Vec<u8>,
+    ) -> Image2D {
         Image2D(Inner::new(
             Kind::Image2D(ImageData {
                 format,
@@ -71,8 +65,8 @@ impl Image2D {
     }
 
     /// `Image2D(format, width, height)`: a mutable image, every pixel opaque white.
-    /// IllegalArgument for a non-positive size or an invalid format.
-    pub fn new(format: i32, width: i32, height: i32) -> Result<Image2D> {
+    /// IllegalArgument for a non-positive size.
+    pub fn new(format: ImageFormat, width: i32, height: i32) -> Result<Image2D> {
         let b = check(format, width, height)?;
         let n = width as usize * height as usize * b;
         Ok(Image2D::make(format, width, height, true, vec![0xFF; n]))
@@ -80,7 +74,12 @@ impl Image2D {
 
     /// `Image2D(format, width, height, byte[] image)`: an immutable image from `pixels`
     /// (left to right, top to bottom). IllegalArgument if `pixels` is too short.
-    pub fn with_pixels(format: i32, width: i32, height: i32, pixels: &[u8]) -> Result<Image2D> {
+    pub fn with_pixels(
+        format: ImageFormat,
+        width: i32,
+        height: i32,
+        pixels: &[u8],
+    ) -> Result<Image2D> {
         let b = check(format, width, height)?;
         let n = width as usize * height as usize * b;
         if pixels.len() < n {
@@ -98,7 +97,7 @@ impl Image2D {
     /// [`with_pixels`](Self::with_pixels) taking the pixels without a copy (the PNG
     /// loader's decoded buffer: a second copy would double its peak memory).
     pub(crate) fn with_pixel_vec(
-        format: i32,
+        format: ImageFormat,
         width: i32,
         height: i32,
         mut pixels: Vec<u8>,
@@ -118,7 +117,7 @@ impl Image2D {
     /// IllegalArgument if `indices` is too short or (as the specification literally says)
     /// the palette is shorter than 256 entries and not a whole number of entries.
     pub fn with_palette(
-        format: i32,
+        format: ImageFormat,
         width: i32,
         height: i32,
         indices: &[u8],
@@ -159,7 +158,7 @@ impl Image2D {
         {
             return iae("rectangle outside the image");
         }
-        let b = bpp(d.format).unwrap();
+        let b = d.format.bytes_per_pixel();
         let row = width as usize * b;
         if pixels.len() < row * height as usize {
             return iae("pixel array too short");
@@ -177,7 +176,7 @@ impl Image2D {
         self.d().mutable
     }
     /// `getFormat()`.
-    pub fn format(&self) -> i32 {
+    pub fn format(&self) -> ImageFormat {
         self.d().format
     }
     /// `getWidth()`.
@@ -198,16 +197,16 @@ impl Image2D {
 impl ImageData {
     /// The pixel at (x, y) as RGBA in [0, 1], missing components 1 (luminance replicates).
     pub fn rgba(&self, x: i32, y: i32) -> [f32; 4] {
-        let b = bpp(self.format).unwrap();
+        let b = self.format.bytes_per_pixel();
         let at = (y as usize * self.width as usize + x as usize) * b;
         let p = &self.pixels[at..at + b];
         let f = |v: u8| v as f32 / 255.0;
         match self.format {
-            Image2D::ALPHA => [1.0, 1.0, 1.0, f(p[0])],
-            Image2D::LUMINANCE => [f(p[0]), f(p[0]), f(p[0]), 1.0],
-            Image2D::LUMINANCE_ALPHA => [f(p[0]), f(p[0]), f(p[0]), f(p[1])],
-            Image2D::RGB => [f(p[0]), f(p[1]), f(p[2]), 1.0],
-            _ => [f(p[0]), f(p[1]), f(p[2]), f(p[3])],
+            ImageFormat::Alpha => [1.0, 1.0, 1.0, f(p[0])],
+            ImageFormat::Luminance => [f(p[0]), f(p[0]), f(p[0]), 1.0],
+            ImageFormat::LuminanceAlpha => [f(p[0]), f(p[0]), f(p[0]), f(p[1])],
+            ImageFormat::Rgb => [f(p[0]), f(p[1]), f(p[2]), 1.0],
+            ImageFormat::Rgba => [f(p[0]), f(p[1]), f(p[2]), f(p[3])],
         }
     }
 }

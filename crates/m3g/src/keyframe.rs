@@ -9,15 +9,16 @@
 //! their times shifted by ±D. All arithmetic is done in f64.
 
 use super::error::{iae, ioobe, ise, Result};
+use super::modes::{Interpolation, RepeatMode};
 use super::object::{class_data, handle, Inner, Kind};
 
 #[derive(Clone, Debug)]
 pub(crate) struct KeyframeData {
-    pub interpolation: i32,
+    pub interpolation: Interpolation,
     pub comps: usize,
     pub times: Vec<i32>,
     pub values: Vec<Vec<f32>>,
-    pub repeat: i32,
+    pub repeat: RepeatMode,
     /// 0 = not set (a set duration is always > 0).
     pub duration: i32,
     pub first: usize,
@@ -34,43 +35,44 @@ handle!(
 class_data!(KeyframeSequence, KeyframeSequence, KeyframeData);
 
 impl KeyframeSequence {
-    /// Linear interpolation.
-    pub const LINEAR: i32 = 176;
-    /// Spherical linear interpolation of quaternions (4 components).
-    pub const SLERP: i32 = 177;
-    /// Catmull-Rom spline with the specification's tangent scaling for uneven key spacing.
-    pub const SPLINE: i32 = 178;
-    /// Spline interpolation of quaternions (4 components).
-    pub const SQUAD: i32 = 179;
-    /// Each key's value holds until the next key.
-    pub const STEP: i32 = 180;
-    /// Play once: before the first valid key its value, after the last its value.
-    pub const CONSTANT: i32 = 192;
-    /// Repeat every `duration`, interpolating across the wrap.
-    pub const LOOP: i32 = 193;
-
     /// `KeyframeSequence(numKeyframes, numComponents, interpolation)`: every key the zero
     /// vector at time 0, CONSTANT, duration unset, valid range all keys. IllegalArgument if a
-    /// count is < 1, the interpolation is unknown, or SLERP/SQUAD has ≠ 4 components.
-    pub fn new(num_keyframes: i32, num_components: i32, interpolation: i32) -> Result<Self> {
+    /// count is < 1 or SLERP/SQUAD has ≠ 4 components.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// // A color going from red to blue in one second, then back again.
+    /// let colors = KeyframeSequence::new(2, 3, Interpolation::Linear)?;
+    /// colors.set_keyframe(0, 0, &[1.0, 0.0, 0.0])?;
+    /// colors.set_keyframe(1, 1000, &[0.0, 0.0, 1.0])?;
+    /// colors.set_duration(2000)?;
+    /// colors.set_repeat_mode(RepeatMode::Loop);
+    /// assert_eq!(colors.sample(500.0)?, [0.5, 0.0, 0.5]);
+    /// assert_eq!(colors.sample(1500.0)?, [0.5, 0.0, 0.5]); // wrapping back to red
+    /// # Ok(())
+    /// # }
+    /// ```
+    pub fn new(
+        num_keyframes: usize,
+        num_components: usize,
+        interpolation: Interpolation,
+    ) -> Result<Self> {
         if num_keyframes < 1 || num_components < 1 {
             return iae("keyframe and component counts must be at least 1");
         }
-        if !(Self::LINEAR..=Self::STEP).contains(&interpolation) {
-            return iae("invalid interpolation type");
-        }
-        if (interpolation == Self::SLERP || interpolation == Self::SQUAD) && num_components != 4 {
+        if interpolation.is_quaternion() && num_components != 4 {
             return iae("SLERP and SQUAD need 4 components");
         }
-        let n = num_keyframes as usize;
-        let c = num_components as usize;
+        let (n, c) = (num_keyframes, num_components);
         Ok(KeyframeSequence(Inner::new(
             Kind::KeyframeSequence(KeyframeData {
                 interpolation,
                 comps: c,
                 times: vec![0; n],
                 values: vec![vec![0.0; c]; n],
-                repeat: Self::CONSTANT,
+                repeat: RepeatMode::Constant,
                 duration: 0,
                 first: 0,
                 last: n - 1,
@@ -81,24 +83,24 @@ impl KeyframeSequence {
     }
 
     /// `getComponentCount()`.
-    pub fn component_count(&self) -> i32 {
-        self.d().comps as i32
+    pub fn component_count(&self) -> usize {
+        self.d().comps
     }
     /// `getKeyframeCount()`.
-    pub fn keyframe_count(&self) -> i32 {
-        self.d().times.len() as i32
+    pub fn keyframe_count(&self) -> usize {
+        self.d().times.len()
     }
     /// `getInterpolationType()`.
-    pub fn interpolation_type(&self) -> i32 {
+    pub fn interpolation_type(&self) -> Interpolation {
         self.d().interpolation
     }
 
     /// `setKeyframe(index, time, value)`: the first `numComponents` values are copied
     /// (SLERP/SQUAD keys are normalized; a zero quaternion stays zero). IndexOutOfBounds for a
     /// bad index; IllegalArgument for a negative time or a short `value`.
-    pub fn set_keyframe(&self, index: i32, time: i32, value: &[f32]) -> Result<()> {
+    pub fn set_keyframe(&self, index: usize, time: i32, value: &[f32]) -> Result<()> {
         let mut d = self.dm();
-        if index < 0 || index as usize >= d.times.len() {
+        if index >= d.times.len() {
             return ioobe("keyframe index");
         }
         if value.len() < d.comps {
@@ -108,46 +110,46 @@ impl KeyframeSequence {
             return iae("negative keyframe time");
         }
         let mut v = value[..d.comps].to_vec();
-        if d.interpolation == Self::SLERP || d.interpolation == Self::SQUAD {
+        if d.interpolation.is_quaternion() {
             let len = v.iter().map(|&x| x as f64 * x as f64).sum::<f64>().sqrt();
             if len > 0.0 && len.is_finite() {
                 v.iter_mut().for_each(|x| *x = (*x as f64 / len) as f32);
             }
         }
-        d.times[index as usize] = time;
-        d.values[index as usize] = v;
+        d.times[index] = time;
+        d.values[index] = v;
         Ok(())
     }
 
     /// `getKeyframe(index, value)`: the time and the (for SLERP/SQUAD normalized) value.
     /// IndexOutOfBounds for a bad index.
-    pub fn get_keyframe(&self, index: i32) -> Result<(i32, Vec<f32>)> {
+    pub fn get_keyframe(&self, index: usize) -> Result<(i32, Vec<f32>)> {
         let d = self.d();
-        if index < 0 || index as usize >= d.times.len() {
+        if index >= d.times.len() {
             return ioobe("keyframe index");
         }
-        Ok((d.times[index as usize], d.values[index as usize].clone()))
+        Ok((d.times[index], d.values[index].clone()))
     }
 
     /// `setValidRange(first, last)`: `last < first` wraps around. IndexOutOfBounds unless
-    /// both are in [0, numKeyframes).
-    pub fn set_valid_range(&self, first: i32, last: i32) -> Result<()> {
+    /// both are below the keyframe count.
+    pub fn set_valid_range(&self, first: usize, last: usize) -> Result<()> {
         let mut d = self.dm();
-        let n = d.times.len() as i32;
-        if !(0..n).contains(&first) || !(0..n).contains(&last) {
+        let n = d.times.len();
+        if first >= n || last >= n {
             return ioobe("valid range outside the keyframes");
         }
-        d.first = first as usize;
-        d.last = last as usize;
+        d.first = first;
+        d.last = last;
         Ok(())
     }
     /// `getValidRangeFirst()`.
-    pub fn valid_range_first(&self) -> i32 {
-        self.d().first as i32
+    pub fn valid_range_first(&self) -> usize {
+        self.d().first
     }
     /// `getValidRangeLast()`.
-    pub fn valid_range_last(&self) -> i32 {
-        self.d().last as i32
+    pub fn valid_range_last(&self) -> usize {
+        self.d().last
     }
 
     /// `setDuration(d)`: IllegalArgument unless d > 0.
@@ -163,16 +165,12 @@ impl KeyframeSequence {
         self.d().duration
     }
 
-    /// `setRepeatMode(mode)`: IllegalArgument unless CONSTANT or LOOP.
-    pub fn set_repeat_mode(&self, mode: i32) -> Result<()> {
-        if mode != Self::CONSTANT && mode != Self::LOOP {
-            return iae("invalid repeat mode");
-        }
+    /// `setRepeatMode(mode)`.
+    pub fn set_repeat_mode(&self, mode: RepeatMode) {
         self.dm().repeat = mode;
-        Ok(())
     }
     /// `getRepeatMode()`.
-    pub fn repeat_mode(&self) -> i32 {
+    pub fn repeat_mode(&self) -> RepeatMode {
         self.d().repeat
     }
 
@@ -221,7 +219,7 @@ impl KeyframeData {
     }
 
     fn looping(&self) -> bool {
-        self.repeat == KeyframeSequence::LOOP
+        self.repeat == RepeatMode::Loop
     }
 
     /// Key at extended index `e` (LOOP: any integer; CONSTANT: only [0, M)).
@@ -273,18 +271,18 @@ impl KeyframeData {
         };
         let (t0, v0) = self.ext(keys, e);
         let (t1, v1) = self.ext(keys, e + 1);
-        if self.interpolation == KeyframeSequence::STEP {
+        if self.interpolation == Interpolation::Step {
             return v0.to_vec();
         }
         let s = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
         match self.interpolation {
-            KeyframeSequence::LINEAR => v0
+            Interpolation::Linear => v0
                 .iter()
                 .zip(v1)
                 .map(|(a, b)| (1.0 - s) * a + s * b)
                 .collect(),
-            KeyframeSequence::SLERP => slerp(s, q4(v0), q4(v1)).to_vec(),
-            KeyframeSequence::SPLINE => {
+            Interpolation::Slerp => slerp(s, q4(v0), q4(v1)).to_vec(),
+            Interpolation::Spline => {
                 let tan0 = self.tangent(keys, e, true);
                 let tan1 = self.tangent(keys, e + 1, false);
                 let (s2, s3) = (s * s, s * s * s);
@@ -367,7 +365,7 @@ impl KeyframeData {
             return f64::INFINITY;
         }
         let (seg, tr, end) = self.segment(keys, t);
-        let step = self.interpolation == KeyframeSequence::STEP;
+        let step = self.interpolation == Interpolation::Step;
         match (seg, end) {
             (None, Some(0)) if dir > 0.0 => keys[0].t - t,
             (None, Some(0)) => f64::INFINITY,
@@ -481,4 +479,11 @@ pub(crate) fn slerp(s: f64, a: [f64; 4], b: [f64; 4]) -> [f64; 4] {
     let wa = ((1.0 - s) * theta).sin() / sin;
     let wb = (s * theta).sin() / sin;
     std::array::from_fn(|k| wa * a[k] + wb * b[k])
+}
+
+impl Interpolation {
+    /// SLERP and SQUAD, which interpolate unit quaternions.
+    pub(crate) fn is_quaternion(self) -> bool {
+        matches!(self, Interpolation::Slerp | Interpolation::Squad)
+    }
 }

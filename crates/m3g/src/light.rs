@@ -1,12 +1,14 @@
 //! `Light`: the ambient, directional, omni and spot light nodes.
 
+use super::color::Color;
 use super::error::{iae, Result};
+use super::modes::LightMode;
 use super::node::NodeExt;
 use super::object::{class_data, handle, Inner, Kind, TransformableExt};
 
 #[derive(Clone, Debug)]
 pub(crate) struct LightData {
-    pub mode: i32,
+    pub mode: LightMode,
     pub color: u32,
     pub intensity: f32,
     pub attenuation: [f32; 3],
@@ -30,21 +32,30 @@ impl Default for Light {
 }
 
 impl Light {
-    /// Ambient light.
-    pub const AMBIENT: i32 = 128;
-    /// Directional light, shining along the node's −Z.
-    pub const DIRECTIONAL: i32 = 129;
-    /// A point light at the node's origin.
-    pub const OMNI: i32 = 130;
-    /// A spot light at the origin, pointing along −Z.
-    pub const SPOT: i32 = 131;
-
     /// `Light()`: DIRECTIONAL, white, intensity 1, attenuation (1, 0, 0), spot angle 45°,
     /// spot exponent 0.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// // A yellow spot light two units above the origin, pointing down.
+    /// let spot = Light::new();
+    /// spot.set_mode(LightMode::Spot);
+    /// spot.set_color(Color::rgb(255, 255, 0));
+    /// spot.set_spot_angle(30.0)?;
+    /// spot.set_translation(0.0, 2.0, 0.0);
+    /// spot.set_orientation(-90.0, 1.0, 0.0, 0.0)?; // −Z turned to −Y
+    /// let world = World::new();
+    /// world.add_child(&spot)?;
+    /// assert_eq!(spot.color(), Color(0x00FFFF00)); // RGB: alpha reads as 0
+    /// # Ok(())
+    /// # }
+    /// ```
     pub fn new() -> Light {
         Light(Inner::new(
             Kind::Light(LightData {
-                mode: Light::DIRECTIONAL,
+                mode: LightMode::Directional,
                 color: 0x00FF_FFFF,
                 intensity: 1.0,
                 attenuation: [1.0, 0.0, 0.0],
@@ -55,16 +66,12 @@ impl Light {
             true,
         ))
     }
-    /// `setMode(mode)`: IllegalArgument unless AMBIENT, DIRECTIONAL, OMNI or SPOT.
-    pub fn set_mode(&self, mode: i32) -> Result<()> {
-        if !(Light::AMBIENT..=Light::SPOT).contains(&mode) {
-            return iae("invalid light mode");
-        }
+    /// `setMode(mode)`.
+    pub fn set_mode(&self, mode: LightMode) {
         self.dm().mode = mode;
-        Ok(())
     }
     /// `getMode()`.
-    pub fn mode(&self) -> i32 {
+    pub fn mode(&self) -> LightMode {
         self.d().mode
     }
     /// `setIntensity(i)`: any value (negative makes an "antilight").
@@ -75,13 +82,13 @@ impl Light {
     pub fn intensity(&self) -> f32 {
         self.d().intensity
     }
-    /// `setColor(RGB)`: the top byte is ignored.
-    pub fn set_color(&self, rgb: i32) {
-        self.dm().color = rgb as u32 & 0xFF_FFFF;
+    /// `setColor(RGB)`: the alpha byte is ignored.
+    pub fn set_color(&self, rgb: Color) {
+        self.dm().color = rgb.0 & 0xFF_FFFF;
     }
     /// `getColor()`: 0x00RRGGBB.
-    pub fn color(&self) -> i32 {
-        self.d().color as i32
+    pub fn color(&self) -> Color {
+        Color(self.d().color)
     }
     /// `setSpotAngle(a)`: IllegalArgument unless 0 ≤ a ≤ 90 (degrees, the cone's half angle).
     pub fn set_spot_angle(&self, angle: f32) -> Result<()> {

@@ -27,7 +27,7 @@ use std::path::{Path, PathBuf};
 
 pub use render::{render_roots, RenderTarget};
 
-use super::Object3D;
+use super::{Object3D, Result};
 
 /// The 12-byte M3G file identifier.
 pub const FILE_IDENTIFIER: [u8; 12] = [
@@ -50,7 +50,8 @@ pub type UserParameters = std::collections::BTreeMap<i32, Vec<u8>>;
 /// returns the referenced file's bytes.
 pub type Resolver = dyn Fn(&str) -> std::io::Result<Vec<u8>>;
 
-/// A load failure (Java's `IOException`): where it happened and why.
+/// The details of a load failure (Java's `IOException`, [`Error::Io`](crate::Error::Io)):
+/// where it happened and why.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LoadError {
     /// The object index (1 = the header) when the error is inside an object.
@@ -99,8 +100,8 @@ impl fmt::Display for LoadError {
 
 impl std::error::Error for LoadError {}
 
-/// The result of a load.
-pub type LoadResult<T> = std::result::Result<T, LoadError>;
+/// The result of a load step.
+pub(crate) type LoadResult<T> = std::result::Result<T, LoadError>;
 
 /// The header object of a .m3g file.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -364,18 +365,35 @@ impl Loader {
 
     /// `Loader.load(byte[], 0)`: the root objects of a .m3g or PNG file in memory. External
     /// references cannot be resolved (use a [`Loader`] with a resolver).
-    pub fn load(bytes: &[u8]) -> LoadResult<Vec<Object3D>> {
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// let group = Group::new();
+    /// group.set_user_id(42);
+    /// let bytes = m3g::writer::save(&[group.as_object3d()], false)?;
+    /// let roots = Loader::load(&bytes)?;
+    /// let loaded = roots[0].downcast::<Group>().expect("a Group");
+    /// assert_eq!(loaded.user_id(), 42);
+    /// // A broken file is an IOException naming what is wrong.
+    /// let err = Loader::load(&bytes[..20]).unwrap_err();
+    /// assert!(matches!(err, Error::Io(_)), "{err}");
+    /// # Ok(())
+    /// # }
+    /// ```
+    pub fn load(bytes: &[u8]) -> Result<Vec<Object3D>> {
         Ok(Loader::new().load_bytes(bytes)?.roots)
     }
 
     /// The root objects of the .m3g or PNG file at `path`; relative external references are
     /// resolved against its folder.
-    pub fn load_path(path: impl AsRef<Path>) -> LoadResult<Vec<Object3D>> {
+    pub fn load_path(path: impl AsRef<Path>) -> Result<Vec<Object3D>> {
         Ok(Loader::new().load_file(path)?.roots)
     }
 
     /// Loads a file (its folder becomes the base for relative references).
-    pub fn load_file(&mut self, path: impl AsRef<Path>) -> LoadResult<Loaded> {
+    pub fn load_file(&mut self, path: impl AsRef<Path>) -> Result<Loaded> {
         self.begin();
         let path = path.as_ref();
         let key = self
@@ -392,15 +410,15 @@ impl Loader {
         let r = self.load_keyed(&bytes, key.display().to_string());
         self.base = saved;
         self.end();
-        r
+        Ok(r?)
     }
 
     /// Loads bytes with this loader's base folder and resolver.
-    pub fn load_bytes(&mut self, bytes: &[u8]) -> LoadResult<Loaded> {
+    pub fn load_bytes(&mut self, bytes: &[u8]) -> Result<Loaded> {
         self.begin();
         let r = self.load_inner(bytes);
         self.end();
-        r
+        Ok(r?)
     }
 
     fn begin(&mut self) {

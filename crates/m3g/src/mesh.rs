@@ -30,6 +30,22 @@ impl NodeExt for Mesh {}
 
 impl Mesh {
     /// `Mesh(vertices, triangles, appearance)`: one submesh.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// let positions = VertexArray::new(3, 3, 1)?;
+    /// positions.set_bytes(0, &[0, 0, 0, 1, 0, 0, 0, 1, 0])?;
+    /// let vertices = VertexBuffer::new();
+    /// vertices.set_positions(Some(&positions), 1.0, None)?;
+    /// let triangle = TriangleStripArray::new_implicit(0, &[3])?;
+    /// let mesh = Mesh::new(&vertices, &triangle, Some(&Appearance::new()));
+    /// assert_eq!(mesh.submesh_count(), 1);
+    /// assert_eq!(mesh.index_buffer(0)?.indices(), [0, 1, 2]);
+    /// # Ok(())
+    /// # }
+    /// ```
     pub fn new(vb: &VertexBuffer, ib: &IndexBuffer, app: Option<&Appearance>) -> Mesh {
         Mesh(Inner::new(
             Kind::Mesh(MeshData {
@@ -71,9 +87,9 @@ impl Mesh {
     }
 
     /// `setAppearance(index, appearance)`: IndexOutOfBounds for a bad submesh.
-    pub fn set_appearance(&self, index: i32, app: Option<&Appearance>) -> Result<()> {
+    pub fn set_appearance(&self, index: usize, app: Option<&Appearance>) -> Result<()> {
         let mut d = self.dm();
-        match d.apps.get_mut(index as usize).filter(|_| index >= 0) {
+        match d.apps.get_mut(index) {
             Some(a) => {
                 *a = app.cloned();
                 Ok(())
@@ -82,15 +98,15 @@ impl Mesh {
         }
     }
     /// `getAppearance(index)`: IndexOutOfBounds for a bad submesh.
-    pub fn appearance(&self, index: i32) -> Result<Option<Appearance>> {
-        match self.d().apps.get(index as usize).filter(|_| index >= 0) {
+    pub fn appearance(&self, index: usize) -> Result<Option<Appearance>> {
+        match self.d().apps.get(index) {
             Some(a) => Ok(a.clone()),
             None => ioobe("submesh index"),
         }
     }
     /// `getIndexBuffer(index)`: IndexOutOfBounds for a bad submesh.
-    pub fn index_buffer(&self, index: i32) -> Result<IndexBuffer> {
-        match self.d().ibs.get(index as usize).filter(|_| index >= 0) {
+    pub fn index_buffer(&self, index: usize) -> Result<IndexBuffer> {
+        match self.d().ibs.get(index) {
             Some(i) => Ok(i.clone()),
             None => ioobe("submesh index"),
         }
@@ -100,8 +116,8 @@ impl Mesh {
         self.d().vb.clone()
     }
     /// `getSubmeshCount()`.
-    pub fn submesh_count(&self) -> i32 {
-        self.d().ibs.len() as i32
+    pub fn submesh_count(&self) -> usize {
+        self.d().ibs.len()
     }
 }
 

@@ -76,20 +76,20 @@ impl MorphingMesh {
         Mesh(self.0.clone())
     }
     /// `getMorphTargetCount()`.
-    pub fn morph_target_count(&self) -> i32 {
-        self.m(|m| m.targets.len() as i32)
+    pub fn morph_target_count(&self) -> usize {
+        self.m(|m| m.targets.len())
     }
     /// `getMorphTarget(index)`: IndexOutOfBounds for a bad index.
-    pub fn morph_target(&self, index: i32) -> Result<VertexBuffer> {
-        match self.m(|m| m.targets.get(index as usize).cloned()) {
-            Some(t) if index >= 0 => Ok(t),
-            _ => ioobe("morph target index"),
+    pub fn morph_target(&self, index: usize) -> Result<VertexBuffer> {
+        match self.m(|m| m.targets.get(index).cloned()) {
+            Some(t) => Ok(t),
+            None => ioobe("morph target index"),
         }
     }
     /// `setWeights(weights)`: the first `getMorphTargetCount()` values, any values (negative,
     /// sums ≠ 1). IllegalArgument if `weights` is shorter than the target count.
     pub fn set_weights(&self, weights: &[f32]) -> Result<()> {
-        let n = self.morph_target_count() as usize;
+        let n = self.morph_target_count();
         if weights.len() < n {
             return iae("fewer weights than morph targets");
         }
@@ -119,7 +119,7 @@ impl MorphingMesh {
 }
 
 /// (components, size, vertex count) of an array.
-type Shape = Option<(i32, i32, i32)>;
+type Shape = Option<(usize, usize, usize)>;
 
 fn shape(a: Option<&VertexArray>) -> Shape {
     a.map(|a| (a.component_count(), a.component_type(), a.vertex_count()))

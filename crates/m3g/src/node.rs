@@ -7,6 +7,7 @@ use glam::{Mat4, Quat, Vec3, Vec4};
 use super::appearance::Background;
 use super::camera::Camera;
 use super::error::{iae, ioobe, ise, Result};
+use super::modes::AlignTarget;
 use super::object::{class_data, handle, tf, Handle, Inner, Kind, ObjRef, WeakRef};
 use super::pick::{self, RayIntersection};
 use super::transform::{invert, Transform};
@@ -20,7 +21,7 @@ pub(crate) struct NodeData {
     pub alpha: f32,
     pub scope: i32,
     /// (target, reference) for the Z axis, then the Y axis.
-    pub alignment: [(i32, Option<WeakRef>); 2],
+    pub alignment: [(AlignTarget, Option<WeakRef>); 2],
 }
 
 impl Default for NodeData {
@@ -31,7 +32,7 @@ impl Default for NodeData {
             picking: true,
             alpha: 1.0,
             scope: -1,
-            alignment: [(Node::NONE, None), (Node::NONE, None)],
+            alignment: [(AlignTarget::None, None), (AlignTarget::None, None)],
         }
     }
 }
@@ -105,17 +106,6 @@ handle!(
 );
 
 impl Node {
-    /// Alignment target: no alignment.
-    pub const NONE: i32 = 144;
-    /// Alignment target: the reference node's origin.
-    pub const ORIGIN: i32 = 145;
-    /// Alignment target: the reference node's X axis.
-    pub const X_AXIS: i32 = 146;
-    /// Alignment target: the reference node's Y axis.
-    pub const Y_AXIS: i32 = 147;
-    /// Alignment target: the reference node's Z axis.
-    pub const Z_AXIS: i32 = 148;
-
     /// This node viewed as class `T`, or `None` if it is not one.
     pub fn downcast<T: Handle>(&self) -> Option<T> {
         T::accepts(&self.0.borrow()).then(|| T::from_raw(self.0.clone()))
@@ -189,23 +179,17 @@ pub trait NodeExt: Handle {
     fn get_transform_to<N: NodeExt>(&self, target: &N) -> Result<Option<Transform>> {
         Ok(transform_between(self.raw(), target.raw())?.map(Transform::from_mat4))
     }
-    /// `setAlignment(zRef, zTarget, yRef, yTarget)`. Targets are [`Node::NONE`],
-    /// [`Node::ORIGIN`] or an axis; a `None` reference means the node `align` is called
-    /// with. IllegalArgument for another target value, for both references and targets equal
-    /// (and not NONE), or for a reference that is this node.
+    /// `setAlignment(zRef, zTarget, yRef, yTarget)`. A `None` reference means the node
+    /// `align` is called with. IllegalArgument for both references and targets equal (and
+    /// not [`AlignTarget::None`]), or for a reference that is this node.
     fn set_alignment(
         &self,
         z_ref: Option<&Node>,
-        z_target: i32,
+        z_target: AlignTarget,
         y_ref: Option<&Node>,
-        y_target: i32,
+        y_target: AlignTarget,
     ) -> Result<()> {
-        for t in [z_target, y_target] {
-            if !(Node::NONE..=Node::Z_AXIS).contains(&t) {
-                return iae("invalid alignment target");
-            }
-        }
-        if z_target == y_target && z_target != Node::NONE && z_ref == y_ref {
+        if z_target == y_target && z_target != AlignTarget::None && z_ref == y_ref {
             return iae("Z and Y alignment are the same");
         }
         for r in [z_ref, y_ref].into_iter().flatten() {
@@ -221,13 +205,15 @@ pub trait NodeExt: Handle {
         ];
         Ok(())
     }
-    /// `getAlignmentTarget(axis)`: IllegalArgument unless `axis` is Y_AXIS or Z_AXIS.
-    fn alignment_target(&self, axis: i32) -> Result<i32> {
+    /// `getAlignmentTarget(axis)`: IllegalArgument unless `axis` is
+    /// [`AlignTarget::YAxis`] or [`AlignTarget::ZAxis`].
+    fn alignment_target(&self, axis: AlignTarget) -> Result<AlignTarget> {
         let k = axis_slot(axis)?;
         Ok(node_data(self.raw()).alignment[k].0)
     }
-    /// `getAlignmentReference(axis)`: IllegalArgument unless `axis` is Y_AXIS or Z_AXIS.
-    fn alignment_reference(&self, axis: i32) -> Result<Option<Node>> {
+    /// `getAlignmentReference(axis)`: IllegalArgument unless `axis` is
+    /// [`AlignTarget::YAxis`] or [`AlignTarget::ZAxis`].
+    fn alignment_reference(&self, axis: AlignTarget) -> Result<Option<Node>> {
         let k = axis_slot(axis)?;
         Ok(node_data(self.raw()).alignment[k]
             .1
@@ -257,10 +243,10 @@ pub trait NodeExt: Handle {
     }
 }
 
-fn axis_slot(axis: i32) -> Result<usize> {
+fn axis_slot(axis: AlignTarget) -> Result<usize> {
     match axis {
-        Node::Z_AXIS => Ok(0),
-        Node::Y_AXIS => Ok(1),
+        AlignTarget::ZAxis => Ok(0),
+        AlignTarget::YAxis => Ok(1),
         _ => iae("axis must be Y_AXIS or Z_AXIS"),
     }
 }
@@ -268,7 +254,7 @@ fn axis_slot(axis: i32) -> Result<usize> {
 /// The target vector of one alignment axis in the frame of `n`'s translation, or `None`.
 fn align_target(n: &ObjRef, slot: usize, common: &ObjRef) -> Result<Option<Vec3>> {
     let (target, r) = node_data(n).alignment[slot].clone();
-    if target == Node::NONE {
+    if target == AlignTarget::None {
         return Ok(None);
     }
     let r = match r {
@@ -289,9 +275,9 @@ fn align_target(n: &ObjRef, slot: usize, common: &ObjRef) -> Result<Option<Vec3>
     let t = tf(n).translation;
     let m = Mat4::from_translation(-t) * to_parent;
     let v = match target {
-        Node::ORIGIN => m * Vec4::new(0.0, 0.0, 0.0, 1.0),
-        Node::X_AXIS => m * Vec4::X,
-        Node::Y_AXIS => m * Vec4::Y,
+        AlignTarget::Origin => m * Vec4::new(0.0, 0.0, 0.0, 1.0),
+        AlignTarget::XAxis => m * Vec4::X,
+        AlignTarget::YAxis => m * Vec4::Y,
         _ => m * Vec4::Z,
     };
     Ok(Some(v.truncate()))
@@ -456,6 +442,26 @@ class_data!(World, World, WorldData);
 
 impl World {
     /// `World()`: no children, no camera, no background.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// let world = World::new();
+    /// let camera = Camera::new();
+    /// world.add_child(&camera)?;
+    /// world.set_active_camera(&camera);
+    /// let sky = Background::new();
+    /// sky.set_color(Color::rgb(40, 60, 90));
+    /// world.set_background(Some(&sky));
+    /// let group = Group::new(); // children are positioned relative to their parent
+    /// group.set_translation(0.0, 0.0, -5.0);
+    /// world.add_child(&group)?;
+    /// assert_eq!(world.child_count(), 2);
+    /// assert_eq!(group.parent(), Some(world.as_node()));
+    /// # Ok(())
+    /// # }
+    /// ```
     pub fn new() -> World {
         World(Inner::new(Kind::World(WorldData::default()), true, true))
     }

@@ -255,12 +255,7 @@ macro_rules! handle {
         }
         impl std::fmt::Debug for $Name {
             fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                write!(
-                    f,
-                    "{}@{:p}",
-                    self.0.borrow().class_name(),
-                    std::rc::Rc::as_ptr(&self.0)
-                )
+                $crate::debug::fmt_object(&self.0, f)
             }
         }
     };
@@ -413,9 +408,9 @@ pub trait Object3DExt: Handle {
         self.raw().borrow().tracks.len()
     }
     /// `getAnimationTrack(i)`: IndexOutOfBounds unless `i < animation_track_count()`.
-    fn animation_track(&self, i: usize) -> Result<Object3D> {
+    fn animation_track(&self, i: usize) -> Result<super::animation::AnimationTrack> {
         match self.raw().borrow().tracks.get(i) {
-            Some(t) => Ok(t.clone()),
+            Some(t) => Ok(super::animation::AnimationTrack(t.0.clone())),
             None => ioobe("animation track index"),
         }
     }

@@ -2,12 +2,12 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
-use super::appearance::PolygonMode;
 use super::camera::Camera;
 use super::error::ioobe;
 use super::error::{iae, ise, Result};
 use super::graphics3d::sprite_rect;
 use super::mesh::{Mesh, Sprite3D};
+use super::modes::{Culling, Winding};
 use super::node::{local, node_data, transform_between, Node};
 use super::object::{tf, Handle, ObjRef};
 use super::transform::invert;
@@ -18,7 +18,7 @@ use super::vertex::NUM_TEXTURE_UNITS;
 pub struct RayIntersection {
     ray: [f32; 6],
     node: Option<Node>,
-    submesh: i32,
+    submesh: usize,
     distance: f32,
     tex: [[f32; 2]; NUM_TEXTURE_UNITS],
     normal: [f32; 3],
@@ -56,19 +56,19 @@ impl RayIntersection {
         self.distance
     }
     /// `getSubmeshIndex()`: 0 for sprites.
-    pub fn submesh_index(&self) -> i32 {
+    pub fn submesh_index(&self) -> usize {
         self.submesh
     }
     /// `getTextureS(unit)`: IndexOutOfBounds for a bad unit.
-    pub fn texture_s(&self, unit: i32) -> Result<f32> {
-        match self.tex.get(unit as usize).filter(|_| unit >= 0) {
+    pub fn texture_s(&self, unit: usize) -> Result<f32> {
+        match self.tex.get(unit) {
             Some(t) => Ok(t[0]),
             None => ioobe("texture unit index"),
         }
     }
     /// `getTextureT(unit)`: IndexOutOfBounds for a bad unit.
-    pub fn texture_t(&self, unit: i32) -> Result<f32> {
-        match self.tex.get(unit as usize).filter(|_| unit >= 0) {
+    pub fn texture_t(&self, unit: usize) -> Result<f32> {
+        match self.tex.get(unit) {
             Some(t) => Ok(t[1]),
             None => ioobe("texture unit index"),
         }
@@ -216,11 +216,9 @@ fn pick_mesh(mesh: &Mesh, m: Mat4, p: &mut Pick) -> Result<()> {
         if tris.iter().any(|&i| i as i32 >= pd.count) {
             return ise("an index is past the vertex count");
         }
-        let (culling, ccw) = app
-            .polygon_mode()
-            .map_or((PolygonMode::CULL_BACK, true), |pm| {
-                (pm.culling(), pm.winding() == PolygonMode::WINDING_CCW)
-            });
+        let (culling, ccw) = app.polygon_mode().map_or((Culling::Back, true), |pm| {
+            (pm.culling(), pm.winding() == Winding::Ccw)
+        });
         let vertex = |v: usize| {
             Vec3::new(
                 pd.get(v, 0) as f32,
@@ -236,9 +234,7 @@ fn pick_mesh(mesh: &Mesh, m: Mat4, p: &mut Pick) -> Result<()> {
             let n = e1.cross(e2);
             let facing = n.dot(d) * if mirrored { -1.0 } else { 1.0 };
             let front = if ccw { facing < 0.0 } else { facing > 0.0 };
-            if (culling == PolygonMode::CULL_BACK && !front)
-                || (culling == PolygonMode::CULL_FRONT && front)
-            {
+            if (culling == Culling::Back && !front) || (culling == Culling::Front && front) {
                 continue;
             }
             // Möller–Trumbore.
@@ -298,7 +294,7 @@ fn pick_mesh(mesh: &Mesh, m: Mat4, p: &mut Pick) -> Result<()> {
                     Vec4::new(g(0), g(1), g(2), 1.0)
                 };
                 let mut q = tc(a) * w + tc(b) * u + tc(c) * v;
-                if let Ok(Some(tex2d)) = app.texture(unit as i32) {
+                if let Ok(Some(tex2d)) = app.texture(unit) {
                     q = tf(&tex2d.0).composite() * q;
                 }
                 *slot = [q.x / q.w, q.y / q.w];
@@ -306,7 +302,7 @@ fn pick_mesh(mesh: &Mesh, m: Mat4, p: &mut Pick) -> Result<()> {
             p.best = Some(RayIntersection {
                 ray: [0.0; 6],
                 node: Some(Node(mesh.0.clone())),
-                submesh: k as i32,
+                submesh: k,
                 distance: dist,
                 tex,
                 normal: normal.to_array(),

@@ -116,19 +116,27 @@ impl SkinnedMesh {
     /// `addTransform(bone, weight, firstVertex, numVertices)`: the vertices
     /// [first, first + count) follow `bone` with weight `weight`; the at-rest transform
     /// `this.getTransformTo(bone)` is recorded now. IllegalArgument if the bone is not the
-    /// skeleton or a descendant, weight ≤ 0 or count ≤ 0; IndexOutOfBounds if first < 0 or
+    /// skeleton or a descendant, weight ≤ 0 or count = 0; IndexOutOfBounds if
     /// first + count > 65535; Arithmetic if the at-rest transform is singular.
-    pub fn add_transform(&self, bone: &Node, weight: i32, first: i32, count: i32) -> Result<()> {
+    pub fn add_transform(
+        &self,
+        bone: &Node,
+        weight: i32,
+        first: usize,
+        count: usize,
+    ) -> Result<()> {
         self.check_bone(bone)?;
         if weight <= 0 {
             return iae("bone weight must be positive");
         }
-        if count <= 0 {
+        if count == 0 {
             return iae("vertex count must be positive");
         }
-        if first < 0 || first as i64 + count as i64 > 65535 {
+        if first.saturating_add(count) > 65535 {
             return ioobe("vertex range outside [0, 65535]");
         }
+        // Both fit in i32 now: at most 65535.
+        let (first, count) = (first as i32, count as i32);
         let at_rest = transform_between(&self.0, &bone.0)?.expect("the bone is a descendant");
         let mesh = self.as_mesh();
         let mut d = mesh.dm();
@@ -162,7 +170,7 @@ impl SkinnedMesh {
     /// normalized weight in each (after keeping the [`MAX_TRANSFORMS_PER_VERTEX`] highest
     /// weights of a vertex); no duplicates, no zero weights. IllegalArgument if the bone is
     /// not in the skeleton.
-    pub fn get_bone_vertices(&self, bone: &Node) -> Result<(Vec<i32>, Vec<f32>)> {
+    pub fn get_bone_vertices(&self, bone: &Node) -> Result<(Vec<usize>, Vec<f32>)> {
         self.check_bone(bone)?;
         let (bones, infl) = self.s(|s| influences(&s.entries, None));
         let Some(b) = bones.iter().position(|e| e.bone == *bone) else {
@@ -171,7 +179,7 @@ impl SkinnedMesh {
         let (mut idx, mut w) = (Vec::new(), Vec::new());
         for (v, list) in infl.iter().enumerate() {
             if let Some(&(_, x)) = list.iter().find(|(k, x)| *k == b && *x > 0.0) {
-                idx.push(v as i32);
+                idx.push(v);
                 w.push(x);
             }
         }
@@ -292,7 +300,7 @@ fn compute(r: &ObjRef) -> Result<(Vec<Vec3>, Option<Vec<Vec3>>)> {
     let Some(pos) = &vbd.positions else {
         return ise("the vertex buffer has no positions");
     };
-    let n = pos.vertex_count() as usize;
+    let n = pos.vertex_count();
     if entries.iter().any(|e| (e.first + e.count) as usize > n) {
         return ise("a bone's vertex range passes the vertex count");
     }
@@ -373,7 +381,7 @@ pub(crate) fn deform(r: &ObjRef) -> Result<VertexBuffer> {
         }
     };
     let (positions, normals) = compute(r)?;
-    let n = positions.len() as i32;
+    let n = positions.len();
     let out = old.unwrap_or_default();
     let (old_pos, old_nrm) = {
         let od = out.d();

@@ -155,8 +155,8 @@ impl Transform {
             return iae("the vertex array has 4 components");
         }
         let values = input.values_f32();
-        let mut out = Vec::with_capacity(n as usize * 4);
-        for v in values.chunks(comps as usize) {
+        let mut out = Vec::with_capacity(n * 4);
+        for v in values.chunks(comps) {
             let p = Vec4::new(
                 v[0],
                 v[1],

@@ -1,5 +1,6 @@
 //! `VertexArray`, `VertexBuffer`, `IndexBuffer` and `TriangleStripArray`.
 
+use super::color::Color;
 use super::error::{iae, ioobe, ise, Result};
 use super::object::{class_data, handle, Handle, Inner, Kind, ObjRef};
 
@@ -67,21 +68,24 @@ class_data!(VertexArray, VertexArray, VertexArrayData);
 impl VertexArray {
     /// `VertexArray(numVertices, numComponents, componentSize)`: zero-filled.
     /// IllegalArgument unless 1 ≤ numVertices ≤ 65535, 2 ≤ numComponents ≤ 4 and
-    /// componentSize is 1 or 2.
-    pub fn new(num_vertices: i32, num_components: i32, component_size: i32) -> Result<VertexArray> {
+    /// componentSize (bytes) is 1 or 2.
+    pub fn new(
+        num_vertices: usize,
+        num_components: usize,
+        component_size: usize,
+    ) -> Result<VertexArray> {
         if !(1..=65535).contains(&num_vertices)
             || !(2..=4).contains(&num_components)
             || !(1..=2).contains(&component_size)
         {
             return iae("invalid vertex array dimensions");
         }
-        let n = (num_vertices * num_components * component_size) as usize;
         Ok(VertexArray(Inner::new(
             Kind::VertexArray(VertexArrayData {
-                count: num_vertices,
-                comps: num_components,
-                size: component_size,
-                data: vec![0; n],
+                count: num_vertices as i32,
+                comps: num_components as i32,
+                size: component_size as i32,
+                data: vec![0; num_vertices * num_components * component_size],
                 bounds: Default::default(),
             }),
             false,
@@ -89,89 +93,91 @@ impl VertexArray {
         )))
     }
 
-    fn check(&self, first: i32, n: i32, len: usize, size: i32) -> Result<()> {
+    /// The vertex count of `len` components starting at vertex `first`, after the checks
+    /// of `set` and `get`: IllegalState for the other component size, IllegalArgument for a
+    /// length that is not whole vertices, IndexOutOfBounds past the last vertex.
+    fn check(&self, first: usize, len: usize, size: i32) -> Result<usize> {
         let d = self.d();
         if d.size != size {
             return ise("the component size does not match");
         }
-        if n < 0 {
-            return iae("negative count");
+        let comps = d.comps as usize;
+        if len % comps != 0 {
+            return iae(format!(
+                "{len} values are not whole vertices of {comps} components"
+            ));
         }
-        if len < n as usize * d.comps as usize {
-            return iae("array too short");
-        }
-        if first < 0 || first as i64 + n as i64 > d.count as i64 {
+        let n = len / comps;
+        if first.saturating_add(n) > d.count as usize {
             return ioobe("vertex range outside the array");
         }
-        Ok(())
+        Ok(n)
     }
 
-    /// `set(firstVertex, numVertices, short[])`: for 16-bit arrays (IllegalState otherwise).
-    pub fn set_shorts(&self, first: i32, n: i32, values: &[i16]) -> Result<()> {
-        self.check(first, n, values.len(), 2)?;
+    /// `set(firstVertex, numVertices, short[])` for 16-bit arrays: `values` holds whole
+    /// vertices, their count is `values.len() / component_count()`.
+    pub fn set_shorts(&self, first: usize, values: &[i16]) -> Result<()> {
+        self.check(first, values.len(), 2)?;
         let mut d = self.dm();
-        let c = d.comps as usize;
-        let at = first as usize * c * 2;
-        for (k, v) in values[..n as usize * c].iter().enumerate() {
+        let at = first * d.comps as usize * 2;
+        for (k, v) in values.iter().enumerate() {
             d.data[at + 2 * k..at + 2 * k + 2].copy_from_slice(&v.to_ne_bytes());
         }
         d.touch();
         Ok(())
     }
 
-    /// `set(firstVertex, numVertices, byte[])`: for 8-bit arrays (IllegalState otherwise).
-    /// Java bytes are signed; `i8` keeps that. See [`set_ubytes`](Self::set_ubytes).
-    pub fn set_bytes(&self, first: i32, n: i32, values: &[i8]) -> Result<()> {
+    /// `set(firstVertex, numVertices, byte[])` for 8-bit arrays, as
+    /// [`set_shorts`](Self::set_shorts). Java bytes are signed; `i8` keeps that. See
+    /// [`set_ubytes`](Self::set_ubytes).
+    pub fn set_bytes(&self, first: usize, values: &[i8]) -> Result<()> {
         let u: Vec<u8> = values.iter().map(|&v| v as u8).collect();
-        self.set_ubytes(first, n, &u)
+        self.set_ubytes(first, &u)
     }
 
     /// `set(firstVertex, numVertices, byte[])` with the bytes given unsigned (colors).
-    pub fn set_ubytes(&self, first: i32, n: i32, values: &[u8]) -> Result<()> {
-        self.check(first, n, values.len(), 1)?;
+    pub fn set_ubytes(&self, first: usize, values: &[u8]) -> Result<()> {
+        self.check(first, values.len(), 1)?;
         let mut d = self.dm();
-        let c = d.comps as usize;
-        let at = first as usize * c;
-        d.data[at..at + n as usize * c].copy_from_slice(&values[..n as usize * c]);
+        let at = first * d.comps as usize;
+        d.data[at..at + values.len()].copy_from_slice(values);
         d.touch();
         Ok(())
     }
 
-    /// `get(firstVertex, numVertices, short[])`: the same checks as `set`.
-    pub fn get_shorts(&self, first: i32, n: i32) -> Result<Vec<i16>> {
-        let c = self.component_count() as usize;
-        self.check(first, n, n.max(0) as usize * c, 2)?;
-        let d = self.dm();
-        let at = first as usize * c * 2;
-        Ok(d.data[at..at + n as usize * c * 2]
+    /// `get(firstVertex, numVertices, short[])`: the components of `n` vertices, with the
+    /// checks of `set`.
+    pub fn get_shorts(&self, first: usize, n: usize) -> Result<Vec<i16>> {
+        let len = n.saturating_mul(self.component_count());
+        self.check(first, len, 2)?;
+        let d = self.d();
+        let at = first * d.comps as usize * 2;
+        Ok(d.data[at..at + len * 2]
             .chunks(2)
             .map(|b| i16::from_ne_bytes([b[0], b[1]]))
             .collect())
     }
 
-    /// `get(firstVertex, numVertices, byte[])`: the same checks as `set`.
-    pub fn get_bytes(&self, first: i32, n: i32) -> Result<Vec<i8>> {
-        let c = self.component_count() as usize;
-        self.check(first, n, n.max(0) as usize * c, 1)?;
+    /// `get(firstVertex, numVertices, byte[])`: as [`get_shorts`](Self::get_shorts).
+    pub fn get_bytes(&self, first: usize, n: usize) -> Result<Vec<i8>> {
+        let len = n.saturating_mul(self.component_count());
+        self.check(first, len, 1)?;
         let d = self.d();
-        let at = first as usize * c;
-        Ok(d.data[at..at + n as usize * c]
-            .iter()
-            .map(|&b| b as i8)
-            .collect())
+        let at = first * d.comps as usize;
+        Ok(d.data[at..at + len].iter().map(|&b| b as i8).collect())
     }
 
     /// `getVertexCount()`.
-    pub fn vertex_count(&self) -> i32 {
-        self.d().count
+    pub fn vertex_count(&self) -> usize {
+        self.d().count as usize
     }
     /// `getComponentCount()`.
-    pub fn component_count(&self) -> i32 {
-        self.d().comps
+    pub fn component_count(&self) -> usize {
+        self.d().comps as usize
     }
-    /// `getComponentType()`: 1 (byte) or 2 (short).
-    pub fn component_type(&self) -> i32 {
-        self.d().size
+    /// `getComponentType()`: the component size in bytes, 1 (byte) or 2 (short).
+    pub fn component_type(&self) -> usize {
+        self.d().size as usize
     }
 
     /// Every component as a float (the raw integers).
@@ -206,7 +212,7 @@ impl VertexBufferData {
             .chain(self.texcoords.iter().flatten().map(|t| &t.0))
     }
 
-    pub fn vertex_count(&self) -> i32 {
+    pub fn vertex_count(&self) -> usize {
         self.arrays().next().map_or(0, |a| a.vertex_count())
     }
 
@@ -243,6 +249,24 @@ fn none_ref() -> ObjRef {
 
 impl VertexBuffer {
     /// `VertexBuffer()`: no arrays, default color opaque white.
+    ///
+    /// ```
+    /// use m3g::prelude::*;
+    ///
+    /// # fn main() -> m3g::Result<()> {
+    /// let positions = VertexArray::new(2, 3, 2)?; // 16-bit
+    /// positions.set_shorts(0, &[0, 0, 0, 100, 0, 0])?; // two whole vertices
+    /// let colors = VertexArray::new(2, 4, 1)?; // RGBA bytes
+    /// colors.set_ubytes(0, &[255, 0, 0, 255, 0, 0, 255, 255])?;
+    /// let vertices = VertexBuffer::new();
+    /// vertices.set_positions(Some(&positions), 0.01, Some(&[0.0, 0.0, -1.0]))?; // 100 → 1.0
+    /// vertices.set_colors(Some(&colors))?;
+    /// assert_eq!(vertices.vertex_count(), 2);
+    /// // A slice that is not whole vertices is refused.
+    /// assert!(matches!(positions.set_shorts(0, &[1, 2]), Err(Error::IllegalArgument(_))));
+    /// # Ok(())
+    /// # }
+    /// ```
     pub fn new() -> VertexBuffer {
         VertexBuffer(Inner::new(
             Kind::VertexBuffer(VertexBufferData {
@@ -260,7 +284,7 @@ impl VertexBuffer {
     }
 
     /// `getVertexCount()`: the shared vertex count, 0 without arrays.
-    pub fn vertex_count(&self) -> i32 {
+    pub fn vertex_count(&self) -> usize {
         self.d().vertex_count()
     }
 
@@ -297,35 +321,35 @@ impl VertexBuffer {
     /// mismatch, or a bias shorter than the component count.
     pub fn set_tex_coords(
         &self,
-        index: i32,
+        index: usize,
         va: Option<&VertexArray>,
         scale: f32,
         bias: Option<&[f32]>,
     ) -> Result<()> {
-        if index < 0 || index as usize >= NUM_TEXTURE_UNITS {
+        if index >= NUM_TEXTURE_UNITS {
             return ioobe("texture unit index");
         }
         let mut d = self.dm();
         let Some(va) = va else {
-            d.texcoords[index as usize] = None;
+            d.texcoords[index] = None;
             return Ok(());
         };
         let c = va.component_count();
         if !(2..=3).contains(&c) {
             return iae("texture coordinates must have 2 or 3 components");
         }
-        let except = d.texcoords[index as usize]
+        let except = d.texcoords[index]
             .as_ref()
             .map_or_else(none_ref, |t| t.0 .0.clone());
         d.check_count(va, &except)?;
         let mut b = [0.0; 3];
         if let Some(bias) = bias {
-            if bias.len() < c as usize {
+            if bias.len() < c {
                 return iae("bias too short");
             }
-            b[..c as usize].copy_from_slice(&bias[..c as usize]);
+            b[..c].copy_from_slice(&bias[..c]);
         }
-        d.texcoords[index as usize] = Some((va.clone(), scale, b));
+        d.texcoords[index] = Some((va.clone(), scale, b));
         Ok(())
     }
 
@@ -367,15 +391,15 @@ impl VertexBuffer {
 
     /// `getTexCoords(index, float[] scaleBias)`: the array and [scale, bias...] (one bias
     /// per component). IndexOutOfBounds for a bad unit.
-    pub fn get_tex_coords(&self, index: i32) -> Result<(Option<VertexArray>, Vec<f32>)> {
-        if index < 0 || index as usize >= NUM_TEXTURE_UNITS {
+    pub fn get_tex_coords(&self, index: usize) -> Result<(Option<VertexArray>, Vec<f32>)> {
+        if index >= NUM_TEXTURE_UNITS {
             return ioobe("texture unit index");
         }
         let d = self.d();
-        Ok(match &d.texcoords[index as usize] {
+        Ok(match &d.texcoords[index] {
             Some((va, s, b)) => {
                 let mut v = vec![*s];
-                v.extend_from_slice(&b[..va.component_count() as usize]);
+                v.extend_from_slice(&b[..va.component_count()]);
                 (Some(va.clone()), v)
             }
             None => (None, Vec::new()),
@@ -391,12 +415,12 @@ impl VertexBuffer {
         self.d().colors.clone()
     }
     /// `setDefaultColor(ARGB)`: used when there is no color array.
-    pub fn set_default_color(&self, argb: i32) {
-        self.dm().default_color = argb as u32;
+    pub fn set_default_color(&self, argb: Color) {
+        self.dm().default_color = argb.0;
     }
     /// `getDefaultColor()`.
-    pub fn default_color(&self) -> i32 {
-        self.d().default_color as i32
+    pub fn default_color(&self) -> Color {
+        Color(self.d().default_color)
     }
 }
 
@@ -415,12 +439,12 @@ class_data!(IndexBuffer, IndexBuffer, IndexData);
 
 impl IndexBuffer {
     /// `getIndexCount()`: three per triangle.
-    pub fn index_count(&self) -> i32 {
-        self.d().triangles.len() as i32
+    pub fn index_count(&self) -> usize {
+        self.d().triangles.len()
     }
     /// `getIndices(int[])`: the triangles as index triplets.
-    pub fn indices(&self) -> Vec<i32> {
-        self.d().triangles.iter().map(|&i| i as i32).collect()
+    pub fn indices(&self) -> Vec<u16> {
+        self.d().triangles.clone()
     }
 }
 
@@ -454,21 +478,20 @@ impl From<TriangleStripArray> for super::object::Object3D {
     }
 }
 
-fn check_lengths(lengths: &[i32]) -> Result<usize> {
+fn check_lengths(lengths: &[usize]) -> Result<usize> {
     if lengths.is_empty() {
         return iae("no strips");
     }
     if lengths.iter().any(|&l| l < 3) {
         return iae("a strip is shorter than 3");
     }
-    Ok(lengths.iter().map(|&l| l as usize).sum())
+    Ok(lengths.iter().fold(0, |a, &l| a.saturating_add(l)))
 }
 
-fn expand(strip_indices: impl Fn(usize) -> u16, lengths: &[i32]) -> Vec<u16> {
+fn expand(strip_indices: impl Fn(usize) -> u16, lengths: &[usize]) -> Vec<u16> {
     let mut tris = Vec::new();
     let mut at = 0;
     for &l in lengths {
-        let l = l as usize;
         for k in 0..l - 2 {
             let (a, b, c) = (
                 strip_indices(at + k),
@@ -497,27 +520,24 @@ fn make(triangles: Vec<u16>) -> TriangleStripArray {
 impl TriangleStripArray {
     /// `TriangleStripArray(firstIndex, stripLengths)`: strips over consecutive vertices
     /// from `first`. IllegalArgument for no strips or one shorter than 3; IndexOutOfBounds if
-    /// `first` < 0 or the vertices run past 65535.
-    pub fn new_implicit(first: i32, lengths: &[i32]) -> Result<TriangleStripArray> {
+    /// the vertices run past 65535.
+    pub fn new_implicit(first: usize, lengths: &[usize]) -> Result<TriangleStripArray> {
         let total = check_lengths(lengths)?;
-        if first < 0 || first as i64 + total as i64 > 65535 {
+        if first.saturating_add(total) > 65535 {
             return ioobe("indices outside [0, 65535]");
         }
-        Ok(make(expand(|k| (first as usize + k) as u16, lengths)))
+        Ok(make(expand(|k| (first + k) as u16, lengths)))
     }
 
     /// `TriangleStripArray(indices, stripLengths)`: strips over explicit indices.
-    /// IllegalArgument for no strips, one shorter than 3, or too few indices;
-    /// IndexOutOfBounds for an index outside [0, 65535].
-    pub fn new_explicit(indices: &[i32], lengths: &[i32]) -> Result<TriangleStripArray> {
+    /// IllegalArgument for no strips, one shorter than 3, or too few indices (indices are
+    /// 16-bit: the specification's range [0, 65535]).
+    pub fn new_explicit(indices: &[u16], lengths: &[usize]) -> Result<TriangleStripArray> {
         let total = check_lengths(lengths)?;
         if indices.len() < total {
             return iae("fewer indices than the strips need");
         }
-        if indices[..total].iter().any(|&i| !(0..=65535).contains(&i)) {
-            return ioobe("index outside [0, 65535]");
-        }
-        Ok(make(expand(|k| indices[k] as u16, lengths)))
+        Ok(make(expand(|k| indices[k], lengths)))
     }
 
     /// This strip array as an [`IndexBuffer`] reference.

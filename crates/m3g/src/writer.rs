@@ -12,12 +12,11 @@
 //!   [`UserParameters`] map (as the Loader makes it);
 //! - −0.0 and denormal floats are written as +0.0 (the format forbids them).
 //!
-//! A graph the format cannot hold is refused with a [`WriteError`]: a reference cycle (a node
+//! A graph the format cannot hold is refused with an [`Error::Write`]: a reference cycle (a node
 //! aligned to one of its ancestors), a NaN or infinite value, or a gap in an Appearance's
 //! texture units or a VertexBuffer's texture-coordinate units.
 
 use std::collections::HashMap;
-use std::fmt;
 
 use glam::Mat4;
 
@@ -25,18 +24,6 @@ use super::deform::MeshExt;
 use super::loader::{adler32, UserParameters, FILE_IDENTIFIER};
 use super::object::{tf, Handle, Inner, Kind, ObjRef};
 use super::*;
-
-/// Why a graph cannot be written.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct WriteError(pub String);
-
-impl fmt::Display for WriteError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "cannot write .m3g: {}", self.0)
-    }
-}
-
-impl std::error::Error for WriteError {}
 
 /// Writer options.
 #[derive(Clone, Debug, Default)]
@@ -48,7 +35,7 @@ pub struct WriteOptions {
 }
 
 /// Serializes the graph reachable from `roots` (uncompressed when `compress` is false).
-pub fn save(roots: &[Object3D], compress: bool) -> std::result::Result<Vec<u8>, WriteError> {
+pub fn save(roots: &[Object3D], compress: bool) -> Result<Vec<u8>> {
     save_with(
         roots,
         &WriteOptions {
@@ -61,10 +48,7 @@ pub fn save(roots: &[Object3D], compress: bool) -> std::result::Result<Vec<u8>, 
 type Key = *const std::cell::RefCell<Inner>;
 
 /// Serializes with options.
-pub fn save_with(
-    roots: &[Object3D],
-    opts: &WriteOptions,
-) -> std::result::Result<Vec<u8>, WriteError> {
+pub fn save_with(roots: &[Object3D], opts: &WriteOptions) -> Result<Vec<u8>> {
     // Leaf-first order.
     let mut order: Vec<ObjRef> = Vec::new();
     let mut state: HashMap<Key, bool> = HashMap::new(); // false = in progress, true = done
@@ -72,7 +56,7 @@ pub fn save_with(
         visit(r.raw(), &mut order, &mut state)?;
     }
     if order.is_empty() {
-        return Err(WriteError("no objects to write".into()));
+        return Err(Error::Write("no objects to write".into()));
     }
     let index: HashMap<Key, u32> = order
         .iter()
@@ -140,11 +124,7 @@ fn dependencies(r: &ObjRef) -> Vec<ObjRef> {
 /// depth-first walk; `state` is `false` while an object is on the path, `true` once
 /// written). A heap stack, not recursion: a graph can nest groups deeper than the thread's
 /// stack allows.
-fn visit(
-    r: &ObjRef,
-    order: &mut Vec<ObjRef>,
-    state: &mut HashMap<Key, bool>,
-) -> std::result::Result<(), WriteError> {
+fn visit(r: &ObjRef, order: &mut Vec<ObjRef>, state: &mut HashMap<Key, bool>) -> Result<()> {
     if state.get(&std::rc::Rc::as_ptr(r)) == Some(&true) {
         return Ok(());
     }
@@ -163,7 +143,7 @@ fn visit(
         match state.get(&k) {
             Some(true) => {}
             Some(false) => {
-                return Err(WriteError(format!(
+                return Err(Error::Write(format!(
                     "a reference cycle through a {} (a node aligned to its ancestor?)",
                     d.borrow().class_name()
                 )))
@@ -189,7 +169,7 @@ struct W<'a> {
     class: &'static str,
 }
 
-type WResult = std::result::Result<(), WriteError>;
+type WResult = Result<()>;
 
 impl W<'_> {
     fn u8(&mut self, v: u8) {
@@ -209,7 +189,7 @@ impl W<'_> {
     }
     fn f32(&mut self, v: f32) -> WResult {
         if !v.is_finite() {
-            return Err(WriteError(format!("a {} holds {v}", self.class)));
+            return Err(Error::Write(format!("a {} holds {v}", self.class)));
         }
         let v = if v == 0.0 || v.is_subnormal() { 0.0 } else { v };
         self.u32(v.to_bits());
@@ -311,7 +291,8 @@ fn write_node(w: &mut W, r: &ObjRef) -> WResult {
         .iter()
         .map(|a| a.1.as_ref().and_then(|x| x.upgrade()))
         .collect();
-    let has = n.alignment.iter().any(|a| a.0 != Node::NONE) || refs.iter().any(Option::is_some);
+    let has =
+        n.alignment.iter().any(|a| a.0 != AlignTarget::None) || refs.iter().any(Option::is_some);
     w.bool(has);
     if has {
         w.u8(n.alignment[0].0 as u8);
@@ -331,7 +312,7 @@ fn write_mesh_part(w: &mut W, m: &mesh::MeshData) {
     }
 }
 
-fn write_object(w: &mut W, r: &ObjRef) -> std::result::Result<u8, WriteError> {
+fn write_object(w: &mut W, r: &ObjRef) -> Result<u8> {
     let i = r.borrow().clone();
     write_o3d(w, &i)?;
     let ty = match &i.kind {
@@ -347,7 +328,7 @@ fn write_object(w: &mut W, r: &ObjRef) -> std::result::Result<u8, WriteError> {
         Kind::AnimationTrack(t) => {
             w.obj(&t.sequence.0);
             w.idx(t.controller.as_ref().map(|c| &c.0));
-            w.i32(t.property);
+            w.i32(t.property.as_raw());
             2
         }
         Kind::Appearance(a) => {
@@ -362,7 +343,7 @@ fn write_object(w: &mut W, r: &ObjRef) -> std::result::Result<u8, WriteError> {
                 .rposition(Option::is_some)
                 .map_or(0, |k| k + 1);
             if a.textures[..n].iter().any(Option::is_none) {
-                return Err(WriteError(
+                return Err(Error::Write(
                     "an Appearance has a gap in its texture units".into(),
                 ));
             }
@@ -387,7 +368,7 @@ fn write_object(w: &mut W, r: &ObjRef) -> std::result::Result<u8, WriteError> {
         Kind::Camera(c) => {
             write_node(w, r)?;
             w.u8(c.projection as u8);
-            if c.projection == Camera::GENERIC {
+            if c.projection == Projection::Generic {
                 w.f32s(&matrix_rows(&c.matrix))?;
             } else {
                 w.f32s(&c.params)?;
@@ -407,7 +388,7 @@ fn write_object(w: &mut W, r: &ObjRef) -> std::result::Result<u8, WriteError> {
         Kind::Fog(f) => {
             w.rgb(f.color);
             w.u8(f.mode as u8);
-            if f.mode == Fog::EXPONENTIAL {
+            if f.mode == FogMode::Exponential {
                 w.f32(f.density)?;
             } else {
                 w.f32(f.near)?;
@@ -579,7 +560,7 @@ fn write_object(w: &mut W, r: &ObjRef) -> std::result::Result<u8, WriteError> {
                 .rposition(Option::is_some)
                 .map_or(0, |k| k + 1);
             if v.texcoords[..n].iter().any(Option::is_none) {
-                return Err(WriteError(
+                return Err(Error::Write(
                     "a VertexBuffer has a gap in its texture-coordinate units".into(),
                 ));
             }

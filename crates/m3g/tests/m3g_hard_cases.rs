@@ -8,13 +8,13 @@ use m3g::*;
 const CLEAR: [u8; 3] = [0, 0, 0];
 
 /// A strip over the given short positions and index list, in one color.
-fn mesh(pos: &[i16], strip: &[i32], lens: &[i32], argb: u32) -> (VertexBuffer, IndexBuffer) {
-    let n = pos.len() as i32 / 3;
+fn mesh(pos: &[i16], strip: &[u16], lens: &[usize], argb: u32) -> (VertexBuffer, IndexBuffer) {
+    let n = pos.len() / 3;
     let va = VertexArray::new(n, 3, 2).unwrap();
-    va.set_shorts(0, n, pos).unwrap();
+    va.set_shorts(0, pos).unwrap();
     let vb = VertexBuffer::new();
     vb.set_positions(Some(&va), 1.0, None).unwrap();
-    vb.set_default_color(argb as i32);
+    vb.set_default_color(Color(argb));
     let ib = TriangleStripArray::new_explicit(strip, lens)
         .unwrap()
         .as_index_buffer();
@@ -32,9 +32,9 @@ fn render(
     ib: &IndexBuffer,
     app: &Appearance,
 ) -> (Result<()>, Vec<[u8; 3]>) {
-    let img = Image2D::new(Image2D::RGB, 16, 16).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 16, 16).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(cam), None).unwrap();
     let r = g.render_submesh(vb, ib, app, t, -1);
@@ -73,7 +73,7 @@ fn camera_near_equal_to_far_renders_nothing() {
         } else {
             c.set_perspective(60.0, 1.0, 2.0, 2.0).unwrap();
         }
-        assert!(matches!(c.get_projection(), Err(M3gError::Arithmetic(_))));
+        assert!(matches!(c.get_projection(), Err(Error::Arithmetic(_))));
         let (r, px) = render(&c, None, &vb, &ib, &app);
         assert!(r.is_ok(), "{r:?}");
         assert_eq!(covered(&px), 0, "parallel {parallel}");
@@ -90,7 +90,7 @@ fn polygon_crossing_w_zero_keeps_only_the_w_positive_part() {
     // The clipped part's winding flips in the view: draw both faces.
     let app = Appearance::new();
     let pm = PolygonMode::new();
-    pm.set_culling(PolygonMode::CULL_NONE).unwrap();
+    pm.set_culling(Culling::None);
     app.set_polygon_mode(Some(&pm));
     // One vertex behind the eye (z = +4), two in front: only the front part is drawn.
     let (vb, ib) = mesh(
@@ -132,7 +132,7 @@ fn non_invertible_modelview_renders_without_error() {
     c.set_parallel(4.0, 1.0, -10.0, 10.0).unwrap();
     let (vb, ib) = square(0);
     let na = VertexArray::new(4, 3, 1).unwrap();
-    na.set_bytes(0, 4, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127])
+    na.set_bytes(0, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127])
         .unwrap();
     vb.set_normals(Some(&na)).unwrap();
     // Lit and fogged: both undefined under a singular modelview, but no exception and no
@@ -144,9 +144,9 @@ fn non_invertible_modelview_renders_without_error() {
     app.set_fog(Some(&Fog::new()));
     let mut t = Transform::new();
     t.post_scale(1.0, 1.0, 0.0);
-    let img = Image2D::new(Image2D::RGB, 16, 16).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 16, 16).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&c), None).unwrap();
     g.add_light(&Light::new(), None);
@@ -165,7 +165,7 @@ fn degenerate_triangles_produce_no_fragments() {
     // Additive blending: a fragment from a degenerate triangle would brighten a pixel.
     let app = Appearance::new();
     let cm = CompositingMode::new();
-    cm.set_blending(CompositingMode::ALPHA_ADD).unwrap();
+    cm.set_blending(Blending::AlphaAdd);
     app.set_compositing_mode(Some(&cm));
     // Repeated indices only, and coincident and collinear positions.
     let pos = [0, 0, 0, 0, 0, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0];
@@ -176,7 +176,7 @@ fn degenerate_triangles_produce_no_fragments() {
         &[3, 0, 2],
         &[2, 2, 4, 4],
     ] {
-        let (vb, ib) = mesh(&pos, strip, &[strip.len() as i32], 0xFF808080);
+        let (vb, ib) = mesh(&pos, strip, &[strip.len()], 0xFF808080);
         let (r, px) = render(&c, None, &vb, &ib, &app);
         r.unwrap();
         assert_eq!(covered(&px), 0, "{strip:?}");
@@ -194,9 +194,9 @@ fn degenerate_triangles_produce_no_fragments() {
 
 #[test]
 fn set_camera_with_a_singular_transform_throws_arithmetic_exception() {
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     let c = Camera::new();
     g.set_camera(Some(&c), None).unwrap();
     for m in [
@@ -211,10 +211,7 @@ fn set_camera_with_a_singular_transform_throws_arithmetic_exception() {
         let mut t = Transform::new();
         t.set(&m).unwrap();
         assert!(
-            matches!(
-                g.set_camera(Some(&c), Some(&t)),
-                Err(M3gError::Arithmetic(_))
-            ),
+            matches!(g.set_camera(Some(&c), Some(&t)), Err(Error::Arithmetic(_))),
             "{m:?}"
         );
         // The previous camera stays in effect.

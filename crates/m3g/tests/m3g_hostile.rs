@@ -9,6 +9,7 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use m3g::loader::{render_roots, LoadError, Loader, MemoryFileSystem, RenderTarget};
+use m3g::Error;
 use m3g::*;
 
 /// The fuzz targets' rendering of what loaded, compiled and run here too so that it
@@ -53,7 +54,12 @@ fn a_group_chain_100000_deep_loads_renders_and_drops_on_a_small_stack() {
         let copy = world.duplicate();
         assert_eq!(copy.find(42).map(|o| o.class_name()), Some("Mesh"));
         let again = writer::save(&[copy.as_object3d()], true).unwrap();
-        assert!(format!("{copy:?} {roots:?}").starts_with("World@"));
+        // Debug summarizes children instead of descending 100 000 levels.
+        let shown = format!("{copy:?} {roots:?}");
+        assert!(
+            shown.starts_with("World { user_id: 0, children: 2,"),
+            "{shown}"
+        );
         drop((copy, world, roots));
         let roots = Loader::load(&again).unwrap();
         assert_eq!(roots.len(), 1);
@@ -89,8 +95,16 @@ fn references(uris: &[&str]) -> Vec<u8> {
     file(true, &[(0, refs)])
 }
 
-fn is_budget_error(e: &LoadError) -> bool {
-    e.to_string().contains("memory budget")
+fn is_budget_error(e: &Error) -> bool {
+    matches!(e, Error::Io(_)) && e.to_string().contains("memory budget")
+}
+
+/// The class a load error names.
+fn class_of(e: &Error) -> Option<&'static str> {
+    match e {
+        Error::Io(LoadError { class, .. }) => *class,
+        _ => None,
+    }
 }
 
 /// Runs `f` on its own thread and fails if it takes longer than 60 s (a hang).
@@ -114,7 +128,7 @@ fn mutable_images_past_the_budget_are_refused() {
     assert!(five.len() < 300);
     let e = Loader::load(&five).unwrap_err();
     assert!(is_budget_error(&e), "{e}");
-    assert_eq!(e.class, Some("Image2D"), "{e}");
+    assert_eq!(class_of(&e), Some("Image2D"), "{e}");
     let one = file(false, &[(0, vec![mutable_image(4096)])]);
     assert_eq!(Loader::load(&one).unwrap().len(), 1);
     // A smaller budget of the caller's.
@@ -301,7 +315,7 @@ fn references_stay_inside_the_referencing_files_folder() {
     std::fs::write(d.join("down.m3g"), references(&["sub/g.m3g"])).unwrap();
     let e = Loader::load_path(d.join("sub/up.m3g")).unwrap_err();
     assert!(e.to_string().contains("outside the folder"), "{e}");
-    assert_eq!(e.class, Some("ExternalReference"));
+    assert_eq!(class_of(&e), Some("ExternalReference"));
     let ok = Loader::new()
         .allow_outside_references(true)
         .load_file(d.join("sub/up.m3g"))

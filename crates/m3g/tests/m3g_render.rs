@@ -4,25 +4,25 @@ use gles_cm_core::{ColorFormat, DepthFormat, Target, TargetFormat};
 use m3g::*;
 
 fn is_iae<T: std::fmt::Debug>(r: Result<T>) -> bool {
-    matches!(r, Err(M3gError::IllegalArgument(_)))
+    matches!(r, Err(Error::IllegalArgument(_)))
 }
 fn is_ise<T: std::fmt::Debug>(r: Result<T>) -> bool {
-    matches!(r, Err(M3gError::IllegalState(_)))
+    matches!(r, Err(Error::IllegalState(_)))
 }
 fn is_ae<T: std::fmt::Debug>(r: Result<T>) -> bool {
-    matches!(r, Err(M3gError::Arithmetic(_)))
+    matches!(r, Err(Error::Arithmetic(_)))
 }
 
 /// A square from (-s, -s, z) to (s, s, z), counter-clockwise seen from +Z, as a strip.
 fn quad(s: f32, z: i16, argb: u32) -> (VertexBuffer, IndexBuffer) {
     let va = VertexArray::new(4, 3, 2).unwrap();
-    va.set_shorts(0, 4, &[-1, -1, z, 1, -1, z, 1, 1, z, -1, 1, z])
+    va.set_shorts(0, &[-1, -1, z, 1, -1, z, 1, 1, z, -1, 1, z])
         .unwrap();
     let vb = VertexBuffer::new();
     vb.set_positions(Some(&va), s, None).unwrap();
-    vb.set_default_color(argb as i32);
+    vb.set_default_color(Color(argb));
     let na = VertexArray::new(4, 3, 1).unwrap();
-    na.set_bytes(0, 4, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127])
+    na.set_bytes(0, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127])
         .unwrap();
     vb.set_normals(Some(&na)).unwrap();
     let ib = TriangleStripArray::new_explicit(&[0, 1, 3, 2], &[4])
@@ -39,7 +39,11 @@ fn ortho_camera() -> Camera {
 
 fn px(img: &Image2D, x: usize, y: usize) -> [u8; 3] {
     let p = img.pixels();
-    let b = if img.format() == Image2D::RGBA { 4 } else { 3 };
+    let b = if img.format() == ImageFormat::Rgba {
+        4
+    } else {
+        3
+    };
     let w = img.width() as usize;
     let at = (y * w + x) * b;
     [p[at], p[at + 1], p[at + 2]]
@@ -47,9 +51,9 @@ fn px(img: &Image2D, x: usize, y: usize) -> [u8; 3] {
 
 #[test]
 fn flat_quad_in_a_parallel_camera_is_pixel_exact() {
-    let img = Image2D::new(Image2D::RGB, 16, 16).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 16, 16).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     assert_eq!(g.viewport(), [0, 0, 16, 16]);
     g.clear(None).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
@@ -69,9 +73,9 @@ fn flat_quad_in_a_parallel_camera_is_pixel_exact() {
 #[test]
 fn y_points_down_and_viewport_offsets() {
     // A quad in the upper half of NDC lands in the top rows of the image.
-    let img = Image2D::new(Image2D::RGBA, 8, 8).unwrap();
+    let img = Image2D::new(ImageFormat::Rgba, 8, 8).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     g.set_viewport(4, 0, 4, 4).unwrap();
@@ -96,13 +100,13 @@ fn y_points_down_and_viewport_offsets() {
 
 #[test]
 fn world_render_with_background_layers_scope_and_enable() {
-    let img = Image2D::new(Image2D::RGB, 16, 16).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 16, 16).unwrap();
     let world = World::new();
     let cam = ortho_camera();
     world.add_child(&cam).unwrap();
     world.set_active_camera(&cam);
     let bg = Background::new();
-    bg.set_color(0xFF0000FFu32 as i32);
+    bg.set_color(Color(0xFF0000FF));
     world.set_background(Some(&bg));
     // Red on layer 1 drawn first in the graph, green on layer 0 at the same depth: green is
     // drawn first, then red over it (depth LEQUAL).
@@ -115,7 +119,7 @@ fn world_render_with_background_layers_scope_and_enable() {
     world.add_child(&m1).unwrap();
     world.add_child(&m2).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_world(&world).unwrap();
     g.release_target();
     assert_eq!(px(&img, 8, 8), [255, 0, 0]);
@@ -123,20 +127,20 @@ fn world_render_with_background_layers_scope_and_enable() {
     // Out of scope, disabled, or without appearance: not drawn.
     m1.set_scope(0);
     m2.set_rendering_enable(false);
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_world(&world).unwrap();
     g.release_target();
     assert_eq!(px(&img, 8, 8), [0, 0, 255]);
     m1.set_scope(-1);
     m1.set_appearance(0, None).unwrap();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_world(&world).unwrap();
     g.release_target();
     assert_eq!(px(&img, 8, 8), [0, 0, 255]);
     // A disabled group disables its children; the camera's own flag is ignored.
     m2.set_rendering_enable(true);
     cam.set_rendering_enable(false);
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_world(&world).unwrap();
     g.release_target();
     assert_eq!(px(&img, 8, 8), [0, 255, 0]);
@@ -144,7 +148,7 @@ fn world_render_with_background_layers_scope_and_enable() {
     // Color clear disabled keeps the old pixels.
     bg.set_color_clear_enable(false);
     img.set(0, 0, 1, 1, &[9, 9, 9]).unwrap();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_world(&world).unwrap();
     g.release_target();
     assert_eq!(px(&img, 0, 0), [9, 9, 9]);
@@ -152,7 +156,7 @@ fn world_render_with_background_layers_scope_and_enable() {
 
 #[test]
 fn opaque_before_blended_within_a_layer() {
-    let img = Image2D::new(Image2D::RGB, 8, 8).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 8, 8).unwrap();
     let world = World::new();
     let cam = ortho_camera();
     world.add_child(&cam).unwrap();
@@ -161,7 +165,7 @@ fn opaque_before_blended_within_a_layer() {
     let (vb1, ib1) = quad(1.0, 1, 0x80FFFFFF);
     let a1 = Appearance::new();
     let cm = CompositingMode::new();
-    cm.set_blending(CompositingMode::ALPHA).unwrap();
+    cm.set_blending(Blending::Alpha);
     a1.set_compositing_mode(Some(&cm));
     let (vb2, ib2) = quad(1.0, 0, 0xFF0000FF);
     world.add_child(&Mesh::new(&vb1, &ib1, Some(&a1))).unwrap();
@@ -169,7 +173,7 @@ fn opaque_before_blended_within_a_layer() {
         .add_child(&Mesh::new(&vb2, &ib2, Some(&Appearance::new())))
         .unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_world(&world).unwrap();
     g.release_target();
     let p = px(&img, 4, 4);
@@ -179,25 +183,25 @@ fn opaque_before_blended_within_a_layer() {
 #[test]
 fn blend_modes_and_alpha_factor() {
     let cases = [
-        (CompositingMode::REPLACE, [255u8, 128, 0]),
+        (Blending::Replace, [255u8, 128, 0]),
         // Source (255, 128, 0) with alpha 0.5 (the factor), destination (200, 0, 0).
-        (CompositingMode::ALPHA, [228, 64, 0]),
-        (CompositingMode::ALPHA_ADD, [255, 64, 0]),
-        (CompositingMode::MODULATE, [200, 0, 0]),
-        (CompositingMode::MODULATE_X2, [255, 0, 0]),
+        (Blending::Alpha, [228, 64, 0]),
+        (Blending::AlphaAdd, [255, 64, 0]),
+        (Blending::Modulate, [200, 0, 0]),
+        (Blending::ModulateX2, [255, 0, 0]),
     ];
     for (mode, want) in cases {
-        let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+        let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
         let mut g = Graphics3D::new();
-        g.bind_image(&img, true, 0).unwrap();
+        g.bind_image(&img, true, RenderHints::empty()).unwrap();
         let bg = Background::new();
-        bg.set_color(0xFFC80000u32 as i32); // (200, 0, 0)
+        bg.set_color(Color(0xFFC80000)); // (200, 0, 0)
         g.clear(Some(&bg)).unwrap();
         g.set_camera(Some(&ortho_camera()), None).unwrap();
         let (vb, ib) = quad(1.0, 0, 0xFFFF8000);
         let mesh = Mesh::new(&vb, &ib, Some(&Appearance::new()));
         let cm = CompositingMode::new();
-        cm.set_blending(mode).unwrap();
+        cm.set_blending(mode);
         mesh.appearance(0)
             .unwrap()
             .unwrap()
@@ -211,7 +215,7 @@ fn blend_modes_and_alpha_factor() {
         for c in 0..3 {
             assert!(
                 p[c].abs_diff(want[c]) <= 1,
-                "mode {mode}: {p:?} vs {want:?}"
+                "mode {mode:?}: {p:?} vs {want:?}"
             );
         }
     }
@@ -219,9 +223,9 @@ fn blend_modes_and_alpha_factor() {
 
 #[test]
 fn depth_is_written_with_the_test_off() {
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     let (near, ib) = quad(1.0, 5, 0xFFFF0000);
@@ -240,7 +244,7 @@ fn depth_is_written_with_the_test_off() {
         "the far quad fails against the written depth"
     );
     // Without a depth buffer nothing is tested.
-    g.bind_image(&img, false, 0).unwrap();
+    g.bind_image(&img, false, RenderHints::empty()).unwrap();
     g.render_submesh(&far, &ib, &Appearance::new(), None, -1)
         .unwrap();
     g.release_target();
@@ -249,32 +253,32 @@ fn depth_is_written_with_the_test_off() {
 
 #[test]
 fn culling_and_winding() {
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
     let mut g = Graphics3D::new();
     let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
     for (cull, wind, drawn) in [
-        (PolygonMode::CULL_BACK, PolygonMode::WINDING_CCW, true),
-        (PolygonMode::CULL_FRONT, PolygonMode::WINDING_CCW, false),
-        (PolygonMode::CULL_BACK, PolygonMode::WINDING_CW, false),
-        (PolygonMode::CULL_NONE, PolygonMode::WINDING_CW, true),
+        (Culling::Back, Winding::Ccw, true),
+        (Culling::Front, Winding::Ccw, false),
+        (Culling::Back, Winding::Cw, false),
+        (Culling::None, Winding::Cw, true),
     ] {
-        g.bind_image(&img, true, 0).unwrap();
+        g.bind_image(&img, true, RenderHints::empty()).unwrap();
         g.clear(None).unwrap();
         g.set_camera(Some(&ortho_camera()), None).unwrap();
         let a = Appearance::new();
         let pm = PolygonMode::new();
-        pm.set_culling(cull).unwrap();
-        pm.set_winding(wind).unwrap();
+        pm.set_culling(cull);
+        pm.set_winding(wind);
         a.set_polygon_mode(Some(&pm));
         g.render_submesh(&vb, &ib, &a, None, -1).unwrap();
         g.release_target();
-        assert_eq!(px(&img, 1, 1) == [255; 3], drawn, "{cull} {wind}");
+        assert_eq!(px(&img, 1, 1) == [255; 3], drawn, "{cull:?} {wind:?}");
     }
 }
 
 #[test]
 fn directional_light_on_a_material() {
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
     let world = World::new();
     let cam = ortho_camera();
     world.add_child(&cam).unwrap();
@@ -287,7 +291,7 @@ fn directional_light_on_a_material() {
     a.set_material(Some(&mat));
     world.add_child(&Mesh::new(&vb, &ib, Some(&a))).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_world(&world).unwrap();
     g.release_target();
     assert_eq!(g.light_count(), 1);
@@ -299,10 +303,10 @@ fn directional_light_on_a_material() {
     // An ambient light adds 0.2 · intensity; turning the directional light away removes it.
     light.set_orientation(180.0, 0.0, 1.0, 0.0).unwrap();
     let amb = Light::new();
-    amb.set_mode(Light::AMBIENT).unwrap();
+    amb.set_mode(LightMode::Ambient);
     amb.set_intensity(0.5);
     world.add_child(&amb).unwrap();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_world(&world).unwrap();
     g.release_target();
     assert_eq!(px(&img, 1, 1), [26, 26, 26], "ambient 0.2 × 0.5");
@@ -312,16 +316,11 @@ fn directional_light_on_a_material() {
 fn vertex_colors_scale_and_bias_against_the_reference() {
     // A perspective scene: a byte-position triangle fan with per-vertex colors.
     let va = VertexArray::new(4, 3, 1).unwrap();
-    va.set_bytes(
-        0,
-        4,
-        &[-100, -90, 0, 110, -80, -20, 90, 100, -60, -80, 70, 10],
-    )
-    .unwrap();
+    va.set_bytes(0, &[-100, -90, 0, 110, -80, -20, 90, 100, -60, -80, 70, 10])
+        .unwrap();
     let ca = VertexArray::new(4, 4, 1).unwrap();
     ca.set_ubytes(
         0,
-        4,
         &[
             255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255,
         ],
@@ -346,12 +345,13 @@ fn vertex_colors_scale_and_bias_against_the_reference() {
         stencil_bits: 0,
     };
     let mut g = Graphics3D::new();
-    g.bind_target(Target::new(80, 64, format), true, 0).unwrap();
+    g.bind_target(Target::new(80, 64, format), true, RenderHints::empty())
+        .unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&cam), Some(&cam_t)).unwrap();
     let a = Appearance::new();
     let pm = PolygonMode::new();
-    pm.set_culling(PolygonMode::CULL_NONE).unwrap();
+    pm.set_culling(Culling::None);
     a.set_polygon_mode(Some(&pm));
     g.render_submesh(&vb, &ib, &a, Some(&model), -1).unwrap();
     let ours = g.release_target().unwrap();
@@ -405,12 +405,12 @@ fn vertex_colors_scale_and_bias_against_the_reference() {
 
 #[test]
 fn unscaled_sprite_is_pixel_exact() {
-    let img = Image2D::new(Image2D::RGB, 16, 16).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 16, 16).unwrap();
     let pixels: Vec<u8> = (0..4 * 2).flat_map(|i| [i as u8 * 30, 0, 255]).collect();
-    let simg = Image2D::with_pixels(Image2D::RGB, 4, 2, &pixels).unwrap();
+    let simg = Image2D::with_pixels(ImageFormat::Rgb, 4, 2, &pixels).unwrap();
     let sprite = Sprite3D::new(false, &simg, Some(&Appearance::new()));
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     g.render_node(&sprite, None).unwrap();
@@ -428,12 +428,12 @@ fn unscaled_sprite_is_pixel_exact() {
     }
     // A crop with a negative width mirrors; crop 0 draws nothing.
     sprite.set_crop(0, 0, -4, 2).unwrap();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.render_node(&sprite, None).unwrap();
     g.release_target();
     assert_eq!(px(&img, 6, 7), [90, 0, 255]);
     sprite.set_crop(0, 0, 0, 2).unwrap();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.render_node(&sprite, None).unwrap();
     g.release_target();
@@ -442,30 +442,29 @@ fn unscaled_sprite_is_pixel_exact() {
 
 #[test]
 fn background_image_border_and_repeat() {
-    let target = Image2D::new(Image2D::RGB, 4, 4).unwrap();
-    let bimg = Image2D::with_pixels(Image2D::RGB, 2, 1, &[10, 0, 0, 20, 0, 0]).unwrap();
+    let target = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
+    let bimg = Image2D::with_pixels(ImageFormat::Rgb, 2, 1, &[10, 0, 0, 20, 0, 0]).unwrap();
     let bg = Background::new();
-    bg.set_color(0xFF0000FFu32 as i32);
+    bg.set_color(Color(0xFF0000FF));
     bg.set_image(Some(&bimg)).unwrap();
     bg.set_crop(0, 0, 4, 1).unwrap(); // twice the image width
     let mut g = Graphics3D::new();
-    g.bind_image(&target, true, 0).unwrap();
+    g.bind_image(&target, true, RenderHints::empty()).unwrap();
     g.clear(Some(&bg)).unwrap();
     g.release_target();
     assert_eq!(px(&target, 0, 0), [10, 0, 0]);
     assert_eq!(px(&target, 1, 3), [20, 0, 0]);
     assert_eq!(px(&target, 2, 0), [0, 0, 255], "BORDER: background color");
-    bg.set_image_mode(Background::REPEAT, Background::BORDER)
-        .unwrap();
-    g.bind_image(&target, true, 0).unwrap();
+    bg.set_image_mode(ImageMode::Repeat, ImageMode::Border);
+    g.bind_image(&target, true, RenderHints::empty()).unwrap();
     g.clear(Some(&bg)).unwrap();
     g.release_target();
     assert_eq!(px(&target, 2, 0), [10, 0, 0], "REPEAT wraps");
     assert_eq!(px(&target, 3, 2), [20, 0, 0]);
     // A format mismatch: IllegalArgument from clear, IllegalState from render(World).
-    let rgba = Image2D::new(Image2D::RGBA, 2, 2).unwrap();
+    let rgba = Image2D::new(ImageFormat::Rgba, 2, 2).unwrap();
     bg.set_image(Some(&rgba)).unwrap();
-    g.bind_image(&target, true, 0).unwrap();
+    g.bind_image(&target, true, RenderHints::empty()).unwrap();
     assert!(is_iae(g.clear(Some(&bg))));
     let w = World::new();
     let c = Camera::new();
@@ -479,7 +478,7 @@ fn background_image_border_and_repeat() {
 #[test]
 fn graphics3d_errors_and_state() {
     let mut g = Graphics3D::new();
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
     let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
     let app = Appearance::new();
     assert!(is_ise(g.clear(None)), "no target");
@@ -488,27 +487,33 @@ fn graphics3d_errors_and_state() {
         g.release_target().is_none(),
         "release without target is ignored"
     );
-    let fixed = Image2D::with_pixels(Image2D::RGB, 1, 1, &[0; 3]).unwrap();
-    assert!(is_iae(g.bind_image(&fixed, true, 0)), "immutable");
+    let fixed = Image2D::with_pixels(ImageFormat::Rgb, 1, 1, &[0; 3]).unwrap();
+    assert!(
+        is_iae(g.bind_image(&fixed, true, RenderHints::empty())),
+        "immutable"
+    );
     assert!(is_iae(g.bind_image(
-        &Image2D::new(Image2D::ALPHA, 1, 1).unwrap(),
+        &Image2D::new(ImageFormat::Alpha, 1, 1).unwrap(),
         true,
-        0
+        RenderHints::empty()
     )));
-    assert!(is_iae(g.bind_image(&img, true, 1)), "bit 0 is not a hint");
+    assert!(is_iae(RenderHints::from_raw(1)), "bit 0 is not a hint");
     assert!(is_iae(g.bind_image(
-        &Image2D::new(Image2D::RGB, MAX_VIEWPORT_DIMENSION + 1, 1).unwrap(),
+        &Image2D::new(ImageFormat::Rgb, MAX_VIEWPORT_DIMENSION + 1, 1).unwrap(),
         true,
-        0
+        RenderHints::empty()
     )));
-    g.bind_image(&img, true, Graphics3D::DITHER | Graphics3D::OVERWRITE)
+    g.bind_image(&img, true, RenderHints::DITHER | RenderHints::OVERWRITE)
         .unwrap();
-    assert_eq!(g.hints(), 20);
+    assert_eq!(g.hints().as_raw(), 20);
     assert!(g.is_depth_buffer_enabled());
     assert_eq!(g.target_image(), Some(img.clone()));
-    assert!(is_ise(g.bind_image(&img, true, 0)), "already bound");
     assert!(
-        is_ise(Graphics3D::new().bind_image(&img, true, 0)),
+        is_ise(g.bind_image(&img, true, RenderHints::empty())),
+        "already bound"
+    );
+    assert!(
+        is_ise(Graphics3D::new().bind_image(&img, true, RenderHints::empty())),
         "bound elsewhere"
     );
     assert!(
@@ -557,16 +562,16 @@ fn graphics3d_errors_and_state() {
     assert!(g.light(0).unwrap().is_none());
     assert!(matches!(
         g.set_light(2, None, None),
-        Err(M3gError::IndexOutOfBounds(_))
+        Err(Error::IndexOutOfBounds(_))
     ));
-    assert!(matches!(g.light(-1), Err(M3gError::IndexOutOfBounds(_))));
+    assert!(matches!(g.light(2), Err(Error::IndexOutOfBounds(_))));
     g.reset_lights();
     assert_eq!(g.light_count(), 0);
     g.release_target();
     assert!(g.target_image().is_none());
     // World checks.
     let w = World::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     assert!(is_ise(g.render_world(&w)), "no active camera");
     let c = Camera::new();
     w.set_active_camera(&c);
@@ -597,7 +602,7 @@ fn picking_meshes() {
     w.add_child(&cam).unwrap();
     let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
     let tc = VertexArray::new(4, 2, 1).unwrap();
-    tc.set_bytes(0, 4, &[0, 1, 1, 1, 1, 0, 0, 0]).unwrap();
+    tc.set_bytes(0, &[0, 1, 1, 1, 1, 0, 0, 0]).unwrap();
     vb.set_tex_coords(0, Some(&tc), 1.0, None).unwrap();
     let mesh = Mesh::new(&vb, &ib, Some(&Appearance::new()));
     mesh.set_translation(0.0, 0.0, -4.0);
@@ -619,8 +624,8 @@ fn picking_meshes() {
     assert!((ri.texture_t(0).unwrap() - 0.5).abs() < 1e-4);
     assert_eq!(ri.ray(), [0.5, 0.0, 0.0, 0.0, 0.0, -2.0]);
     assert!(matches!(
-        ri.texture_s(NUM_TEXTURE_UNITS as i32),
-        Err(M3gError::IndexOutOfBounds(_))
+        ri.texture_s(NUM_TEXTURE_UNITS),
+        Err(Error::IndexOutOfBounds(_))
     ));
     assert!(
         w.pick_ray(-1, [2.0, 0.0, 0.0], [0.0, 0.0, -1.0])
@@ -667,7 +672,8 @@ fn picking_scaled_sprites_checks_alpha() {
     cam.set_parallel(2.0, 1.0, -10.0, 10.0).unwrap();
     w.add_child(&cam).unwrap();
     // Left column transparent, right column opaque.
-    let img = Image2D::with_pixels(Image2D::RGBA, 2, 1, &[0, 0, 0, 0, 255, 255, 255, 255]).unwrap();
+    let img =
+        Image2D::with_pixels(ImageFormat::Rgba, 2, 1, &[0, 0, 0, 0, 255, 255, 255, 255]).unwrap();
     let app = Appearance::new();
     let cm = CompositingMode::new();
     cm.set_alpha_threshold(0.5).unwrap();
@@ -703,11 +709,11 @@ fn test_image(mutable: bool) -> Image2D {
         })
         .collect();
     if mutable {
-        let img = Image2D::new(Image2D::RGB, 8, 8).unwrap();
+        let img = Image2D::new(ImageFormat::Rgb, 8, 8).unwrap();
         img.set(0, 0, 8, 8, &pixels).unwrap();
         img
     } else {
-        Image2D::with_pixels(Image2D::RGB, 8, 8, &pixels).unwrap()
+        Image2D::with_pixels(ImageFormat::Rgb, 8, 8, &pixels).unwrap()
     }
 }
 
@@ -720,7 +726,7 @@ fn texel(x: usize, y: usize) -> [u8; 3] {
 fn tex_quad(argb: u32, scale: f32, bias: Option<&[f32]>) -> (VertexBuffer, IndexBuffer) {
     let (vb, ib) = quad(1.0, 0, argb);
     let ta = VertexArray::new(4, 2, 1).unwrap();
-    ta.set_bytes(0, 4, &[0, 1, 1, 1, 1, 0, 0, 0]).unwrap();
+    ta.set_bytes(0, &[0, 1, 1, 1, 1, 0, 0, 0]).unwrap();
     vb.set_tex_coords(0, Some(&ta), scale, bias).unwrap();
     (vb, ib)
 }
@@ -733,9 +739,9 @@ fn render_one(
     a: &Appearance,
     t: Option<&Transform>,
 ) -> Image2D {
-    let img = Image2D::new(Image2D::RGB, w, w).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, w, w).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     g.render_submesh(vb, ib, a, t, -1).unwrap();
@@ -756,7 +762,7 @@ fn near(p: [u8; 3], want: [f32; 3], tol: f32, what: &str) {
 fn textured_quad_nearest_one_to_one_is_exact() {
     let (vb, ib) = tex_quad(0xFFFFFFFF, 1.0, None);
     let tex = Texture2D::new(&test_image(false)).unwrap();
-    tex.set_blending(Texture2D::FUNC_REPLACE).unwrap();
+    tex.set_blending(TextureFunction::Replace);
     let a = Appearance::new();
     a.set_texture(0, Some(&tex)).unwrap();
     let img = render_one(8, &vb, &ib, &a, None);
@@ -771,7 +777,7 @@ fn textured_quad_nearest_one_to_one_is_exact() {
 fn texture_modulate_with_vertex_colors_and_the_other_functions() {
     let (vb, ib) = tex_quad(0xFFFFFFFF, 1.0, None);
     let ca = VertexArray::new(4, 3, 1).unwrap();
-    ca.set_ubytes(0, 4, &[128, 255, 64].repeat(4)).unwrap();
+    ca.set_ubytes(0, &[128, 255, 64].repeat(4)).unwrap();
     vb.set_colors(Some(&ca)).unwrap();
     let tex = Texture2D::new(&test_image(false)).unwrap();
     let a = Appearance::new();
@@ -785,7 +791,7 @@ fn texture_modulate_with_vertex_colors_and_the_other_functions() {
         near(px(&img, x, y), want, 1.0, "modulate");
     }
     // ADD: Cf + Ct, saturated. BLEND: Cf(1 − Ct) + Cc·Ct. DECAL on RGB: Ct.
-    tex.set_blending(Texture2D::FUNC_ADD).unwrap();
+    tex.set_blending(TextureFunction::Add);
     let img = render_one(8, &vb, &ib, &a, None);
     let t = texel(3, 5);
     near(
@@ -794,8 +800,8 @@ fn texture_modulate_with_vertex_colors_and_the_other_functions() {
         1.0,
         "add",
     );
-    tex.set_blending(Texture2D::FUNC_BLEND).unwrap();
-    tex.set_blend_color(0x00FF0080);
+    tex.set_blending(TextureFunction::Blend);
+    tex.set_blend_color(Color(0x00FF0080));
     let img = render_one(8, &vb, &ib, &a, None);
     let cc = [255.0f32, 0.0, 128.0];
     near(
@@ -807,7 +813,7 @@ fn texture_modulate_with_vertex_colors_and_the_other_functions() {
         1.0,
         "blend",
     );
-    tex.set_blending(Texture2D::FUNC_DECAL).unwrap();
+    tex.set_blending(TextureFunction::Decal);
     let img = render_one(8, &vb, &ib, &a, None);
     assert_eq!(px(&img, 3, 5), t, "decal");
 }
@@ -819,7 +825,7 @@ fn texture_transform_follows_the_coordinate_scale_and_bias() {
     // (texture transform first) would give s + 0.5: half the image off.
     let (vb, ib) = tex_quad(0xFFFFFFFF, 0.5, Some(&[0.5, 0.0]));
     let tex = Texture2D::new(&test_image(false)).unwrap();
-    tex.set_blending(Texture2D::FUNC_REPLACE).unwrap();
+    tex.set_blending(TextureFunction::Replace);
     tex.set_scale(2.0, 2.0, 1.0);
     let a = Appearance::new();
     a.set_texture(0, Some(&tex)).unwrap();
@@ -838,8 +844,7 @@ fn texture_transform_follows_the_coordinate_scale_and_bias() {
     }
     let (vb1, ib1) = tex_quad(0xFFFFFFFF, 1.0, None);
     tex.set_scale(1.0, 1.0, 1.0);
-    tex.set_wrapping(Texture2D::WRAP_CLAMP, Texture2D::WRAP_REPEAT)
-        .unwrap();
+    tex.set_wrapping(TextureWrap::Clamp, TextureWrap::Repeat);
     let img = render_one(8, &vb1, &ib1, &a, None);
     for x in 0..8 {
         assert_eq!(px(&img, x, 3), texel((x + 2).min(7), 3), "clamp x = {x}");
@@ -850,9 +855,9 @@ fn texture_transform_follows_the_coordinate_scale_and_bias() {
 fn mipmaps_are_generated_when_the_level_filter_asks() {
     // A 2 × 2 checker of black and white, drawn into a 1 × 1 viewport: the base level
     // gives one of its texels; a mipmap level filter gives the 1 × 1 level, the mean.
-    let img = Image2D::with_pixels(Image2D::LUMINANCE, 2, 2, &[0, 255, 255, 0]).unwrap();
+    let img = Image2D::with_pixels(ImageFormat::Luminance, 2, 2, &[0, 255, 255, 0]).unwrap();
     let tex = Texture2D::new(&img).unwrap();
-    tex.set_blending(Texture2D::FUNC_REPLACE).unwrap();
+    tex.set_blending(TextureFunction::Replace);
     let a = Appearance::new();
     a.set_texture(0, Some(&tex)).unwrap();
     let (vb, ib) = tex_quad(0xFFFFFFFF, 1.0, None);
@@ -862,7 +867,7 @@ fn mipmaps_are_generated_when_the_level_filter_asks() {
         "{:?}",
         px(&base, 0, 0)
     );
-    tex.set_filtering(Texture2D::FILTER_NEAREST, Texture2D::FILTER_NEAREST)
+    tex.set_filtering(TextureFilter::Nearest, TextureFilter::Nearest)
         .unwrap();
     let mip = render_one(1, &vb, &ib, &a, None);
     assert_eq!(px(&mip, 0, 0), [128, 128, 128]);
@@ -872,18 +877,18 @@ fn mipmaps_are_generated_when_the_level_filter_asks() {
 fn a_mutable_texture_image_is_seen_when_edited_and_converted_only_then() {
     let image = test_image(true);
     let tex = Texture2D::new(&image).unwrap();
-    tex.set_blending(Texture2D::FUNC_REPLACE).unwrap();
+    tex.set_blending(TextureFunction::Replace);
     let a = Appearance::new();
     a.set_texture(0, Some(&tex)).unwrap();
     let (vb, ib) = tex_quad(0xFFFFFFFF, 1.0, None);
-    let img = Image2D::new(Image2D::RGB, 8, 8).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 8, 8).unwrap();
     let mut g = Graphics3D::new();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     for (edit, uploads) in [(false, 1), (false, 1), (true, 2)] {
         if edit {
             image.set(1, 2, 1, 1, &[9, 8, 7]).unwrap();
         }
-        g.bind_image(&img, true, 0).unwrap();
+        g.bind_image(&img, true, RenderHints::empty()).unwrap();
         g.render_submesh(&vb, &ib, &a, None, -1).unwrap();
         g.release_target();
         assert_eq!(g.stats().texture_uploads, uploads);
@@ -895,10 +900,12 @@ fn a_mutable_texture_image_is_seen_when_edited_and_converted_only_then() {
 /// A Material with the given colors (ARGB) and shininess.
 fn material(ambient: u32, diffuse: u32, specular: u32, emissive: u32, shininess: f32) -> Material {
     let m = Material::new();
-    m.set_color(Material::AMBIENT, ambient as i32).unwrap();
-    m.set_color(Material::DIFFUSE, diffuse as i32).unwrap();
-    m.set_color(Material::SPECULAR, specular as i32).unwrap();
-    m.set_color(Material::EMISSIVE, emissive as i32).unwrap();
+    m.set_color(MaterialColor::AMBIENT, Color(ambient)).unwrap();
+    m.set_color(MaterialColor::DIFFUSE, Color(diffuse)).unwrap();
+    m.set_color(MaterialColor::SPECULAR, Color(specular))
+        .unwrap();
+    m.set_color(MaterialColor::EMISSIVE, Color(emissive))
+        .unwrap();
     m.set_shininess(shininess).unwrap();
     m
 }
@@ -907,9 +914,9 @@ fn material(ambient: u32, diffuse: u32, specular: u32, emissive: u32, shininess:
 /// into a 4 × 4 image and returns pixel (1, 1).
 fn lit_pixel(a: &Appearance, lights: &[(&Light, Transform)], t: Option<&Transform>) -> [u8; 3] {
     let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     for (l, lt) in lights {
@@ -942,7 +949,7 @@ fn lit_quad_against_hand_computed_values() {
     let b = Appearance::new();
     b.set_material(Some(&Material::new()));
     let omni = Light::new();
-    omni.set_mode(Light::OMNI).unwrap();
+    omni.set_mode(LightMode::Omni);
     omni.set_attenuation(1.0, 0.0, 0.25).unwrap();
     let mut at = Transform::new();
     at.post_translate(0.0, 0.0, 2.0);
@@ -956,7 +963,7 @@ fn lit_quad_against_hand_computed_values() {
     // SPOT there, pointing down −Z: the corners are 35.3° off axis. A 30° cone leaves the
     // quad dark; a 40° cone with exponent 2 gives 0.8 · (2/√6) · (2/√6)².
     let spot = Light::new();
-    spot.set_mode(Light::SPOT).unwrap();
+    spot.set_mode(LightMode::Spot);
     spot.set_spot_angle(30.0).unwrap();
     near(
         lit_pixel(&b, &[(&spot, at)], None),
@@ -974,8 +981,8 @@ fn lit_quad_against_hand_computed_values() {
     );
     // AMBIENT: ambient material (0.2) × color × intensity; colors scale per channel.
     let amb = Light::new();
-    amb.set_mode(Light::AMBIENT).unwrap();
-    amb.set_color(0x00FF8000);
+    amb.set_mode(LightMode::Ambient);
+    amb.set_color(Color(0x00FF8000));
     amb.set_intensity(2.0);
     near(
         lit_pixel(&b, &[(&amb, Transform::new())], None),
@@ -986,9 +993,9 @@ fn lit_quad_against_hand_computed_values() {
     // A light whose scope shares no bit with the mesh's (immediate mode: the scope
     // argument) does not light it.
     let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     sun.set_scope(2);
     g.add_light(&sun, None);
@@ -1007,8 +1014,8 @@ fn vertex_color_tracking_and_the_alpha_factor_with_a_material() {
     let a = Appearance::new();
     a.set_material(Some(&m));
     let mut g = Graphics3D::new();
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
-    g.bind_image(&img, true, 0).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     g.add_light(&sun, None);
@@ -1017,9 +1024,9 @@ fn vertex_color_tracking_and_the_alpha_factor_with_a_material() {
     assert_eq!(px(&img, 1, 1), [255, 128, 64]);
     // The alpha factor multiplies the lit alpha: the diffuse alpha without tracking...
     let bg = Background::new();
-    bg.set_color(0xFF0000FFu32 as i32);
+    bg.set_color(Color(0xFF0000FF));
     let cm = CompositingMode::new();
-    cm.set_blending(CompositingMode::ALPHA).unwrap();
+    cm.set_blending(Blending::Alpha);
     for tracking in [false, true] {
         let m = material(0, 0xFFFFFFFF, 0, 0, 0.0);
         m.set_vertex_color_tracking_enable(tracking);
@@ -1030,7 +1037,7 @@ fn vertex_color_tracking_and_the_alpha_factor_with_a_material() {
         let (vb, ib) = quad(1.0, 0, 0x80FFFFFF);
         let mesh = Mesh::new(&vb, &ib, Some(&a));
         mesh.set_alpha_factor(0.5).unwrap();
-        g.bind_image(&img, true, 0).unwrap();
+        g.bind_image(&img, true, RenderHints::empty()).unwrap();
         g.clear(Some(&bg)).unwrap();
         g.render_node(&mesh, None).unwrap();
         g.release_target();
@@ -1057,7 +1064,7 @@ fn two_sided_lighting_lights_the_back_with_the_reversed_normal() {
     let a = Appearance::new();
     a.set_material(Some(&material(0, 0xFFCCCCCC, 0, 0x00101010, 0.0)));
     let pm = PolygonMode::new();
-    pm.set_culling(PolygonMode::CULL_NONE).unwrap();
+    pm.set_culling(Culling::None);
     a.set_polygon_mode(Some(&pm));
     assert_eq!(
         lit_pixel(&a, &[(&sun, Transform::new())], Some(&back)),
@@ -1088,11 +1095,11 @@ fn negative_position_scale_does_not_turn_the_normals() {
     let a = Appearance::new();
     a.set_material(Some(&Material::new()));
     let pm = PolygonMode::new();
-    pm.set_culling(PolygonMode::CULL_NONE).unwrap();
+    pm.set_culling(Culling::None);
     a.set_polygon_mode(Some(&pm));
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
     let mut g = Graphics3D::new();
-    g.bind_image(&img, true, 0).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     g.add_light(&Light::new(), None);
     g.render_submesh(&vb, &ib, &a, None, -1).unwrap();
@@ -1107,7 +1114,7 @@ fn linear_and_exponential_fog() {
     t.post_translate(0.0, 0.0, -5.0);
     let (vb, ib) = quad(1.0, 0, 0xFFFF0000);
     let fog = Fog::new();
-    fog.set_color(0x000000FF);
+    fog.set_color(Color(0x000000FF));
     fog.set_linear(0.0, 10.0);
     let a = Appearance::new();
     a.set_fog(Some(&fog));
@@ -1118,7 +1125,7 @@ fn linear_and_exponential_fog() {
     let img = render_one(4, &vb, &ib, &a, Some(&t));
     assert_eq!(px(&img, 1, 1), [255, 0, 0], "nearer than near: no fog");
     // EXPONENTIAL: f = e^(−0.2 · 5).
-    fog.set_mode(Fog::EXPONENTIAL).unwrap();
+    fog.set_mode(FogMode::Exponential);
     fog.set_density(0.2).unwrap();
     let img = render_one(4, &vb, &ib, &a, Some(&t));
     let f = (-1.0f32).exp();
@@ -1152,9 +1159,9 @@ fn row_world(n: usize) -> (World, Vec<Mesh>) {
 fn meshes_outside_the_frustum_are_culled_before_their_vertices_are_transformed() {
     let (world, meshes) = row_world(3);
     let render = |g: &mut Graphics3D| {
-        let img = Image2D::new(Image2D::RGB, 8, 8).unwrap();
+        let img = Image2D::new(ImageFormat::Rgb, 8, 8).unwrap();
         g.reset_stats();
-        g.bind_image(&img, true, 0).unwrap();
+        g.bind_image(&img, true, RenderHints::empty()).unwrap();
         g.render_world(&world).unwrap();
         g.release_target();
         (img.pixels(), g.stats())
@@ -1192,18 +1199,18 @@ fn meshes_outside_the_frustum_are_culled_before_their_vertices_are_transformed()
     assert_eq!(s.submeshes_culled, 0);
     // Vertex data changed in place: the cached bounds follow it.
     let far = VertexArray::new(4, 3, 2).unwrap();
-    far.set_shorts(0, 4, &[100, 100, 0, 101, 100, 0, 101, 101, 0, 100, 101, 0])
+    far.set_shorts(0, &[100, 100, 0, 101, 100, 0, 101, 101, 0, 100, 101, 0])
         .unwrap();
     let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
     vb.set_positions(Some(&far), 1.0, None).unwrap();
     let mut g = Graphics3D::new();
-    let img = Image2D::new(Image2D::RGB, 4, 4).unwrap();
-    g.bind_image(&img, true, 0).unwrap();
+    let img = Image2D::new(ImageFormat::Rgb, 4, 4).unwrap();
+    g.bind_image(&img, true, RenderHints::empty()).unwrap();
     g.set_camera(Some(&ortho_camera()), None).unwrap();
     let a = Appearance::new();
     g.render_submesh(&vb, &ib, &a, None, -1).unwrap();
     assert_eq!(g.stats().submeshes_culled, 1);
-    far.set_shorts(0, 4, &[-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0])
+    far.set_shorts(0, &[-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0])
         .unwrap();
     g.render_submesh(&vb, &ib, &a, None, -1).unwrap();
     assert_eq!(g.stats().submeshes_culled, 1);
@@ -1218,23 +1225,23 @@ fn perspective_textured_fogged_scene_against_the_reference() {
     // generated mipmaps. Tolerance: under 2 % of the pixels more than one step off and a
     // mean error under 0.5 step (f32 against f64, per-pixel λ).
     let ta = VertexArray::new(4, 2, 1).unwrap();
-    ta.set_bytes(0, 4, &[0, 4, 4, 4, 4, 0, 0, 0]).unwrap();
+    ta.set_bytes(0, &[0, 4, 4, 4, 4, 0, 0, 0]).unwrap();
     let (vb, ib) = quad(1.0, 0, 0xFFFFFFFF);
     vb.set_tex_coords(0, Some(&ta), 1.0, None).unwrap();
     let ca = VertexArray::new(4, 4, 1).unwrap();
     let cols = [
         255u8, 255, 255, 255, 255, 200, 100, 255, 100, 255, 200, 255, 200, 200, 255, 255,
     ];
-    ca.set_ubytes(0, 4, &cols).unwrap();
+    ca.set_ubytes(0, &cols).unwrap();
     vb.set_colors(Some(&ca)).unwrap();
     let image = test_image(false);
     let tex = Texture2D::new(&image).unwrap();
-    tex.set_filtering(Texture2D::FILTER_LINEAR, Texture2D::FILTER_LINEAR)
+    tex.set_filtering(TextureFilter::Linear, TextureFilter::Linear)
         .unwrap();
     tex.set_translation(0.1, 0.0, 0.0);
     let fog = Fog::new();
     fog.set_linear(1.0, 6.0);
-    fog.set_color(0x00406080);
+    fog.set_color(Color(0x00406080));
     let a = Appearance::new();
     a.set_texture(0, Some(&tex)).unwrap();
     a.set_fog(Some(&fog));
@@ -1251,7 +1258,8 @@ fn perspective_textured_fogged_scene_against_the_reference() {
         stencil_bits: 0,
     };
     let mut g = Graphics3D::new();
-    g.bind_target(Target::new(80, 64, format), true, 0).unwrap();
+    g.bind_target(Target::new(80, 64, format), true, RenderHints::empty())
+        .unwrap();
     g.clear(None).unwrap();
     g.set_camera(Some(&cam), Some(&cam_t)).unwrap();
     g.render_submesh(&vb, &ib, &a, Some(&model), -1).unwrap();

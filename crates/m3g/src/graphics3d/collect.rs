@@ -3,10 +3,11 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
-use crate::appearance::{Appearance, CompositingMode};
+use crate::appearance::Appearance;
 use crate::error::{ise, Result};
 use crate::light::Light;
 use crate::mesh::{Mesh, Sprite3D};
+use crate::modes::Blending;
 use crate::node::{node_data, to_ancestor};
 use crate::object::{tf, Handle, Kind, ObjRef};
 use crate::vertex::{IndexBuffer, VertexBuffer, VertexBufferData};
@@ -60,7 +61,7 @@ pub(super) fn collect_lights(world: &ObjRef, out: &mut Vec<(Light, Mat4)>) {
 
 pub(super) fn is_blended(app: &Appearance) -> bool {
     app.compositing_mode()
-        .is_some_and(|c| c.blending() != CompositingMode::REPLACE)
+        .is_some_and(|c| c.blending() != Blending::Replace)
 }
 
 /// The deferred checks of a submesh: positions present, indices inside the buffer.
@@ -70,7 +71,7 @@ pub(super) fn validate(vb: &VertexBuffer, ib: &IndexBuffer) -> Result<()> {
         return ise("the vertex buffer has no positions");
     }
     let n = d.vertex_count();
-    if ib.d().triangles.iter().any(|&i| i as i32 >= n) {
+    if ib.d().triangles.iter().any(|&i| i as usize >= n) {
         return ise("an index is past the vertex count");
     }
     Ok(())

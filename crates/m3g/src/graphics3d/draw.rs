@@ -21,11 +21,11 @@ use super::sprite::draw_sprite;
 use super::{Bound, Graphics3D, RenderStats, MAX_LIGHTS};
 use crate::appearance::{
     apply_compositing, apply_polygon_mode, argb_to_rgba, core_fog, core_material, rgba_of, tex_env,
-    Appearance, Texture2D, TextureData,
+    Appearance, TextureData,
 };
 use crate::error::{ise, Result};
 use crate::image::{Image2D, ImageData};
-use crate::light::Light;
+use crate::modes::{ImageFormat, LightMode, RenderHints, TextureFilter, TextureWrap};
 use crate::node::node_data;
 use crate::object::{tf, Handle};
 use crate::transform::invert;
@@ -116,16 +116,16 @@ impl Graphics3D {
                 ..CoreLight::default()
             };
             match d.mode {
-                Light::AMBIENT => {
+                LightMode::Ambient => {
                     l.ambient = color;
                     l.diffuse = black;
                     l.specular = black;
                 }
-                Light::DIRECTIONAL => l.position = mv * Vec4::Z,
+                LightMode::Directional => l.position = mv * Vec4::Z,
                 _ => {
                     l.position = mv * Vec4::W;
                     l.attenuation = d.attenuation;
-                    if d.mode == Light::SPOT {
+                    if d.mode == LightMode::Spot {
                         l.spot_direction = (mv * Vec4::NEG_Z).truncate();
                         l.spot_cutoff = d.spot_angle;
                         l.spot_exponent = d.spot_exponent;
@@ -154,7 +154,7 @@ impl Graphics3D {
         };
         s.scissor = Some(self.clear_rect());
         s.depth_range = self.depth_range;
-        s.dither = b.hints & Graphics3D::DITHER != 0;
+        s.dither = b.hints.contains(RenderHints::DITHER);
         s
     }
 }
@@ -181,15 +181,15 @@ pub(super) struct TexCache {
 }
 
 /// M3G's level filter × image filter → the core's minification filter (checklist §2.1).
-fn min_filter(level: i32, image: i32) -> MinFilter {
-    let linear = image == Texture2D::FILTER_LINEAR;
+fn min_filter(level: TextureFilter, image: TextureFilter) -> MinFilter {
+    let linear = image == TextureFilter::Linear;
     match (level, linear) {
-        (Texture2D::FILTER_NEAREST, false) => MinFilter::NearestMipmapNearest,
-        (Texture2D::FILTER_NEAREST, true) => MinFilter::LinearMipmapNearest,
-        (Texture2D::FILTER_LINEAR, false) => MinFilter::NearestMipmapLinear,
-        (Texture2D::FILTER_LINEAR, true) => MinFilter::LinearMipmapLinear,
-        (_, false) => MinFilter::Nearest,
-        (_, true) => MinFilter::Linear,
+        (TextureFilter::Nearest, false) => MinFilter::NearestMipmapNearest,
+        (TextureFilter::Nearest, true) => MinFilter::LinearMipmapNearest,
+        (TextureFilter::Linear, false) => MinFilter::NearestMipmapLinear,
+        (TextureFilter::Linear, true) => MinFilter::LinearMipmapLinear,
+        (TextureFilter::BaseLevel, false) => MinFilter::Nearest,
+        (TextureFilter::BaseLevel, true) => MinFilter::Linear,
     }
 }
 
@@ -198,11 +198,11 @@ fn min_filter(level: i32, image: i32) -> MinFilter {
 /// chain (2 × 2 box filter) when `min` uses one.
 fn build_sampler(d: &ImageData, min: MinFilter, mag: MagFilter, ws: Wrap, wt: Wrap) -> Sampler {
     let format = match d.format {
-        Image2D::ALPHA => BaseFormat::Alpha,
-        Image2D::LUMINANCE => BaseFormat::Luminance,
-        Image2D::LUMINANCE_ALPHA => BaseFormat::LuminanceAlpha,
-        Image2D::RGB => BaseFormat::Rgb,
-        _ => BaseFormat::Rgba,
+        ImageFormat::Alpha => BaseFormat::Alpha,
+        ImageFormat::Luminance => BaseFormat::Luminance,
+        ImageFormat::LuminanceAlpha => BaseFormat::LuminanceAlpha,
+        ImageFormat::Rgb => BaseFormat::Rgb,
+        ImageFormat::Rgba => BaseFormat::Rgba,
     };
     let bpp = format.components();
     let texels = d
@@ -240,15 +240,12 @@ fn build_sampler(d: &ImageData, min: MinFilter, mag: MagFilter, ws: Wrap, wt: Wr
 impl TexCache {
     /// The core texture of `t`, converted again only when needed.
     fn sampler(&mut self, t: &TextureData, stats: &mut RenderStats) -> Arc<Sampler> {
-        let wrap = |w: i32| {
-            if w == Texture2D::WRAP_CLAMP {
-                Wrap::ClampToEdge
-            } else {
-                Wrap::Repeat
-            }
+        let wrap = |w| match w {
+            TextureWrap::Clamp => Wrap::ClampToEdge,
+            TextureWrap::Repeat => Wrap::Repeat,
         };
         let min = min_filter(t.level_filter, t.image_filter);
-        let mag = if t.image_filter == Texture2D::FILTER_LINEAR {
+        let mag = if t.image_filter == TextureFilter::Linear {
             MagFilter::Linear
         } else {
             MagFilter::Nearest

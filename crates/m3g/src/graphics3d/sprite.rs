@@ -192,6 +192,8 @@ mod tests {
     use super::*;
     use crate::appearance::{CompositingMode, Fog};
     use crate::image::Image2D;
+    use crate::modes::{Blending, FogMode, ImageFormat, RenderHints};
+    use crate::Color;
     use gles_cm_core::target::{ColorFormat, DepthFormat, Target, TargetFormat};
     use gles_cm_core::{Frame, Viewport};
 
@@ -284,9 +286,13 @@ mod tests {
             frame: Frame::for_target(&target),
             target,
             image: None,
-            format: Image2D::RGB,
+            format: ImageFormat::Rgb,
             depth: true,
-            hints: if dither { crate::Graphics3D::DITHER } else { 0 },
+            hints: if dither {
+                RenderHints::DITHER
+            } else {
+                RenderHints::empty()
+            },
         }
     }
 
@@ -299,18 +305,13 @@ mod tests {
             width: 58,
             height: 44,
         };
-        s.dither = b.hints != 0;
+        s.dither = !b.hints.is_empty();
         s
     }
 
     /// The image's pixels: every texel different, alpha varying.
-    fn image(format: i32, w: i32, h: i32) -> Image2D {
-        let bpp = match format {
-            Image2D::ALPHA | Image2D::LUMINANCE => 1,
-            Image2D::LUMINANCE_ALPHA => 2,
-            Image2D::RGB => 3,
-            _ => 4,
-        };
+    fn image(format: ImageFormat, w: i32, h: i32) -> Image2D {
+        let bpp = format.bytes_per_pixel() as i32;
         let pixels: Vec<u8> = (0..w * h * bpp).map(|i| (i * 37 % 251) as u8).collect();
         Image2D::with_pixels(format, w, h, &pixels).unwrap()
     }
@@ -328,15 +329,15 @@ mod tests {
     #[test]
     fn one_quad_matches_the_per_texel_drawing() {
         let fog_linear = Fog::new();
-        fog_linear.set_mode(Fog::LINEAR).unwrap();
+        fog_linear.set_mode(FogMode::Linear);
         fog_linear.set_linear(1.0, 9.0);
-        fog_linear.set_color(0x00_30_80_F0);
+        fog_linear.set_color(Color(0x00_30_80_F0));
         let fog_exp = Fog::new();
-        fog_exp.set_mode(Fog::EXPONENTIAL).unwrap();
+        fog_exp.set_mode(FogMode::Exponential);
         fog_exp.set_density(0.15).unwrap();
-        fog_exp.set_color(0x00_FF_40_10);
+        fog_exp.set_color(Color(0x00_FF_40_10));
         let blend = CompositingMode::new();
-        blend.set_blending(CompositingMode::ALPHA).unwrap();
+        blend.set_blending(Blending::Alpha);
         blend.set_alpha_threshold(0.25).unwrap();
         let crops = [
             (0, 0, 7, 5),
@@ -349,10 +350,10 @@ mod tests {
         for format in [ColorFormat::Rgba8888, ColorFormat::Rgb565] {
             for dither in [false, true] {
                 for img_format in [
-                    Image2D::RGBA,
-                    Image2D::RGB,
-                    Image2D::ALPHA,
-                    Image2D::LUMINANCE_ALPHA,
+                    ImageFormat::Rgba,
+                    ImageFormat::Rgb,
+                    ImageFormat::Alpha,
+                    ImageFormat::LuminanceAlpha,
                 ] {
                     for (k, &(cx, cy, cw, ch)) in crops.iter().enumerate() {
                         for scaled in [false, true] {
@@ -402,7 +403,7 @@ mod tests {
                                 let edge = scaled
                                     && (near_edge(x, x0, w, n, 1.0 / 128.0)
                                         || near_edge(y, y0, h, m, 1.0 / 128.0));
-                                assert!(a == b || edge, "{format:?} dither {dither} image {img_format} crop {k} scaled {scaled}: pixel {i}: {a:#x} vs {b:#x}");
+                                assert!(a == b || edge, "{format:?} dither {dither} image {img_format:?} crop {k} scaled {scaled}: pixel {i}: {a:#x} vs {b:#x}");
                                 drawn += usize::from(a != c);
                             }
                             assert!(drawn > 0 || k == 4, "crop {k} draws something");

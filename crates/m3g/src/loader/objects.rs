@@ -184,16 +184,18 @@ impl<'a> Cur<'a> {
         }
         Ok(v as i32)
     }
-    fn rgb(&mut self, f: &str) -> LoadResult<i32> {
-        let b = self.take(3, f)?;
-        Ok(((b[0] as i32) << 16) | ((b[1] as i32) << 8) | b[2] as i32)
+    /// A mode byte: one of the specification's values of `E`.
+    fn mode<E: TryFrom<i32>>(&mut self, f: &str) -> LoadResult<E> {
+        let v = self.u8(f)?;
+        E::try_from(v as i32).map_err(|_| self.err(f, format!("invalid value {v}")))
     }
-    fn rgba(&mut self, f: &str) -> LoadResult<i32> {
+    fn rgb(&mut self, f: &str) -> LoadResult<Color> {
+        let b = self.take(3, f)?;
+        Ok(Color(u32::from_be_bytes([0, b[0], b[1], b[2]])))
+    }
+    fn rgba(&mut self, f: &str) -> LoadResult<Color> {
         let b = self.take(4, f)?;
-        Ok(
-            (((b[3] as u32) << 24) | ((b[0] as u32) << 16) | ((b[1] as u32) << 8) | b[2] as u32)
-                as i32,
-        )
+        Ok(Color::from([b[0], b[1], b[2], b[3]]))
     }
     fn string(&mut self, f: &str) -> LoadResult<String> {
         let rest = &self.d[self.p..];
@@ -555,7 +557,7 @@ struct NodePart {
     picking: bool,
     alpha: u8,
     scope: i32,
-    align: Option<(i32, i32, Option<Node>, Option<Node>)>,
+    align: Option<(AlignTarget, AlignTarget, Option<Node>, Option<Node>)>,
 }
 
 fn parse_o3d(st: &mut State, c: &mut Cur) -> LoadResult<O3d> {
@@ -615,8 +617,8 @@ fn parse_node(st: &mut State, c: &mut Cur) -> LoadResult<NodePart> {
     let alpha = c.u8("alphaFactor")?;
     let scope = c.i32("scope")?;
     let align = if c.bool("hasAlignment")? {
-        let zt = c.enum8("zTarget", |v| (144..=148).contains(&v))?;
-        let yt = c.enum8("yTarget", |v| (144..=148).contains(&v))?;
+        let zt = c.mode::<AlignTarget>("zTarget")?;
+        let yt = c.mode::<AlignTarget>("yTarget")?;
         let zr = st.reference(c, "zReference", NODE)?.map(typed::<Node>);
         let yr = st.reference(c, "yReference", NODE)?.map(typed::<Node>);
         Some((zt, yt, zr, yr))
@@ -730,13 +732,14 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             let o = parse_o3d(st, c)?;
             let seq = st.required(c, "keyframeSequence", Want::Exact(19))?;
             let ctl = st.reference(c, "animationController", Want::Exact(1))?;
-            let prop = c.u32("propertyID")?;
-            if !(256..=276).contains(&prop) {
-                return Err(c.err("propertyID", format!("invalid property {prop}")));
-            }
+            let raw = c.u32("propertyID")?;
+            let prop = i32::try_from(raw)
+                .ok()
+                .and_then(|p| AnimationProperty::from_raw(p).ok())
+                .ok_or_else(|| c.err("propertyID", format!("invalid property {raw}")))?;
             let t = c.api(
                 "propertyID",
-                AnimationTrack::new(&typed::<KeyframeSequence>(seq), prop as i32),
+                AnimationTrack::new(&typed::<KeyframeSequence>(seq), prop),
             )?;
             t.set_controller(ctl.map(typed::<AnimationController>).as_ref());
             let ob = t.as_object3d();
@@ -767,7 +770,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             for k in 0..n {
                 let f = format!("textures[{k}]");
                 let t = st.required(c, &f, Want::Exact(17))?;
-                c.api(&f, a.set_texture(k as i32, Some(&typed::<Texture2D>(t))))?;
+                c.api(&f, a.set_texture(k, Some(&typed::<Texture2D>(t))))?;
             }
             let ob = a.as_object3d();
             apply_o3d(c, ty, &ob, o)?;
@@ -777,8 +780,8 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             let o = parse_o3d(st, c)?;
             let color = c.rgba("backgroundColor")?;
             let img = st.reference(c, "backgroundImage", Want::Exact(10))?;
-            let mx = c.enum8("backgroundImageModeX", |v| v == 32 || v == 33)?;
-            let my = c.enum8("backgroundImageModeY", |v| v == 32 || v == 33)?;
+            let mx = c.mode::<ImageMode>("backgroundImageModeX")?;
+            let my = c.mode::<ImageMode>("backgroundImageModeY")?;
             let cx = c.i32("cropX")?;
             let cy = c.i32("cropY")?;
             let cw = c.i32("cropWidth")?;
@@ -794,7 +797,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                 "backgroundImage",
                 b.set_image(img.map(typed::<Image2D>).as_ref()),
             )?;
-            c.api("backgroundImageMode", b.set_image_mode(mx, my))?;
+            b.set_image_mode(mx, my);
             c.api("crop", b.set_crop(cx, cy, cw, ch))?;
             b.set_depth_clear_enable(depth);
             b.set_color_clear_enable(color_clear);
@@ -805,8 +808,8 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
         5 => {
             let parts = node_parts(st, c)?;
             let cam = Camera::new();
-            let pt = c.enum8("projectionType", |v| (48..=50).contains(&v))?;
-            if pt == Camera::GENERIC {
+            let pt = c.mode::<Projection>("projectionType")?;
+            if pt == Projection::Generic {
                 let m = c.f32s::<16>("projectionMatrix")?;
                 let mut t = Transform::new();
                 c.api("projectionMatrix", t.set(&m))?;
@@ -816,7 +819,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                 let aspect = c.f32("aspectRatio")?;
                 let near = c.f32("near")?;
                 let far = c.f32("far")?;
-                if pt == Camera::PERSPECTIVE {
+                if pt == Projection::Perspective {
                     c.api("fovy", cam.set_perspective(fovy, aspect, near, far))?;
                 } else {
                     c.api("fovy", cam.set_parallel(fovy, aspect, near, far))?;
@@ -831,8 +834,8 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             m.set_depth_write_enable(c.bool("depthWriteEnabled")?);
             m.set_color_write_enable(c.bool("colorWriteEnabled")?);
             m.set_alpha_write_enable(c.bool("alphaWriteEnabled")?);
-            let bl = c.enum8("blending", |v| (64..=68).contains(&v))?;
-            c.api("blending", m.set_blending(bl))?;
+            let bl = c.mode::<Blending>("blending")?;
+            m.set_blending(bl);
             let th = c.u8("alphaThreshold")?;
             c.api("alphaThreshold", m.set_alpha_threshold(th as f32 / 255.0))?;
             let f = c.f32("depthOffsetFactor")?;
@@ -846,9 +849,9 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             let o = parse_o3d(st, c)?;
             let fog = Fog::new();
             fog.set_color(c.rgb("color")?);
-            let mode = c.enum8("mode", |v| v == 80 || v == 81)?;
-            c.api("mode", fog.set_mode(mode))?;
-            if mode == Fog::EXPONENTIAL {
+            let mode = c.mode::<FogMode>("mode")?;
+            fog.set_mode(mode);
+            if mode == FogMode::Exponential {
                 let d = c.f32("density")?;
                 c.api("density", fog.set_density(d))?;
             } else {
@@ -863,12 +866,12 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
         8 => {
             let o = parse_o3d(st, c)?;
             let m = PolygonMode::new();
-            let cull = c.enum8("culling", |v| (160..=162).contains(&v))?;
-            let shade = c.enum8("shading", |v| v == 164 || v == 165)?;
-            let wind = c.enum8("winding", |v| v == 168 || v == 169)?;
-            c.api("culling", m.set_culling(cull))?;
-            c.api("shading", m.set_shading(shade))?;
-            c.api("winding", m.set_winding(wind))?;
+            let cull = c.mode::<Culling>("culling")?;
+            let shade = c.mode::<Shading>("shading")?;
+            let wind = c.mode::<Winding>("winding")?;
+            m.set_culling(cull);
+            m.set_shading(shade);
+            m.set_winding(wind);
             m.set_two_sided_lighting_enable(c.bool("twoSidedLightingEnabled")?);
             m.set_local_camera_lighting_enable(c.bool("localCameraLightingEnabled")?);
             m.set_perspective_correction_enable(c.bool("perspectiveCorrectionEnabled")?);
@@ -916,19 +919,14 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
         }
         10 => {
             let o = parse_o3d(st, c)?;
-            let format = c.enum8("format", |v| (96..=100).contains(&v))?;
+            let format = c.mode::<ImageFormat>("format")?;
             let mutable = c.bool("isMutable")?;
             let w = c.int("width")?;
             let h = c.int("height")?;
             if w == 0 || h == 0 {
                 return Err(c.err("width", format!("size {w}x{h} is empty")));
             }
-            let bpp = match format {
-                96 | 97 => 1u64,
-                98 => 2,
-                99 => 3,
-                _ => 4,
-            };
+            let bpp = format.bytes_per_pixel() as u64;
             let px = w as u64 * h as u64;
             let img = if mutable {
                 if px > MAX_MUTABLE_IMAGE_PIXELS {
@@ -980,7 +978,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
         11 => {
             let o = parse_o3d(st, c)?;
             let enc = c.enum8("encoding", |v| matches!(v, 0 | 1 | 2 | 128 | 129 | 130))?;
-            let (start, indices): (u32, Option<Vec<i32>>) = match enc {
+            let (start, indices): (u32, Option<Vec<u16>>) = match enc {
                 0 => (c.u32("startIndex")?, None),
                 1 => (c.u8("startIndex")? as u32, None),
                 2 => (c.u16("startIndex")? as u32, None),
@@ -1003,7 +1001,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                                 c.err(&format!("indices[{k}]"), format!("index {x} > 65535"))
                             );
                         }
-                        v.push(x as i32);
+                        v.push(x as u16);
                     }
                     (0, Some(v))
                 }
@@ -1023,7 +1021,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                     ));
                 }
                 sum += l as u64;
-                lengths.push(l.min(i32::MAX as u32) as i32);
+                lengths.push(l as usize);
             }
             // Each strip of n vertices becomes n - 2 triangles of three 16-bit indices.
             let expanded = 6 * sum;
@@ -1040,7 +1038,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                     }
                     c.api(
                         "stripLengths",
-                        TriangleStripArray::new_implicit(start as i32, &lengths),
+                        TriangleStripArray::new_implicit(start as usize, &lengths),
                     )?
                 }
                 Some(ix) => {
@@ -1064,12 +1062,12 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             let al = c.f32("attenuationLinear")?;
             let aq = c.f32("attenuationQuadratic")?;
             l.set_color(c.rgb("color")?);
-            let mode = c.enum8("mode", |v| (128..=131).contains(&v))?;
+            let mode = c.mode::<LightMode>("mode")?;
             let intensity = c.f32("intensity")?;
             let angle = c.f32("spotAngle")?;
             let exp = c.f32("spotExponent")?;
             c.api("attenuation", l.set_attenuation(ac, al, aq))?;
-            c.api("mode", l.set_mode(mode))?;
+            l.set_mode(mode);
             l.set_intensity(intensity);
             c.api("spotAngle", l.set_spot_angle(angle))?;
             c.api("spotExponent", l.set_spot_exponent(exp))?;
@@ -1084,10 +1082,10 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             let spe = c.rgb("specularColor")?;
             let sh = c.f32("shininess")?;
             let tr = c.bool("vertexColorTrackingEnabled")?;
-            c.api("ambientColor", m.set_color(Material::AMBIENT, amb))?;
-            c.api("diffuseColor", m.set_color(Material::DIFFUSE, dif))?;
-            c.api("emissiveColor", m.set_color(Material::EMISSIVE, emi))?;
-            c.api("specularColor", m.set_color(Material::SPECULAR, spe))?;
+            c.api("ambientColor", m.set_color(MaterialColor::AMBIENT, amb))?;
+            c.api("diffuseColor", m.set_color(MaterialColor::DIFFUSE, dif))?;
+            c.api("emissiveColor", m.set_color(MaterialColor::EMISSIVE, emi))?;
+            c.api("specularColor", m.set_color(MaterialColor::SPECULAR, spe))?;
             c.api("shininess", m.set_shininess(sh))?;
             m.set_vertex_color_tracking_enable(tr);
             let ob = m.as_object3d();
@@ -1141,13 +1139,16 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
             let img = st.required(c, "image", Want::Exact(10))?;
             let t = c.api("image", Texture2D::new(&typed::<Image2D>(img)))?;
             t.set_blend_color(c.rgb("blendColor")?);
-            let bl = c.enum8("blending", |v| (224..=228).contains(&v))?;
-            c.api("blending", t.set_blending(bl))?;
-            let ws = c.enum8("wrappingS", |v| v == 240 || v == 241)?;
-            let wt = c.enum8("wrappingT", |v| v == 240 || v == 241)?;
-            c.api("wrapping", t.set_wrapping(ws, wt))?;
-            let lf = c.enum8("levelFilter", |v| (208..=210).contains(&v))?;
-            let imf = c.enum8("imageFilter", |v| v == 209 || v == 210)?;
+            let bl = c.mode::<TextureFunction>("blending")?;
+            t.set_blending(bl);
+            let ws = c.mode::<TextureWrap>("wrappingS")?;
+            let wt = c.mode::<TextureWrap>("wrappingT")?;
+            t.set_wrapping(ws, wt);
+            let lf = c.mode::<TextureFilter>("levelFilter")?;
+            let imf = c.mode::<TextureFilter>("imageFilter")?;
+            if imf == TextureFilter::BaseLevel {
+                return Err(c.err("imageFilter", "invalid value 208"));
+            }
             c.api("filtering", t.set_filtering(lf, imf))?;
             apply_tf(c, &t, &tf)?;
             let ob = t.as_object3d();
@@ -1181,10 +1182,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                 return Err(c.err("vertexCount", "vertex count is 0"));
             }
             let raw = c.take(n * comps * size, "vertices")?;
-            let va = c.api(
-                "vertexCount",
-                VertexArray::new(n as i32, comps as i32, size as i32),
-            )?;
+            let va = c.api("vertexCount", VertexArray::new(n, comps, size))?;
             if size == 1 {
                 let mut v: Vec<i8> = raw.iter().map(|&b| b as i8).collect();
                 if enc == 1 {
@@ -1192,7 +1190,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                         v[k] = v[k].wrapping_add(v[k - comps]);
                     }
                 }
-                c.api("vertices", va.set_bytes(0, n as i32, &v))?;
+                c.api("vertices", va.set_bytes(0, &v))?;
             } else {
                 let mut v: Vec<i16> = raw
                     .chunks_exact(2)
@@ -1203,7 +1201,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                         v[k] = v[k].wrapping_add(v[k - comps]);
                     }
                 }
-                c.api("vertices", va.set_shorts(0, n as i32, &v))?;
+                c.api("vertices", va.set_shorts(0, &v))?;
             }
             let ob = va.as_object3d();
             apply_o3d(c, ty, &ob, o)?;
@@ -1244,7 +1242,7 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
                 // The format says the third bias of a 2-component array "must be 0.0", but
                 // real exporters (the corpus's wizzer files) write other values; the API
                 // ignores it, so it is accepted and dropped (not strict verification).
-                c.api(&f, vb.set_tex_coords(k as i32, Some(&va), s, Some(&b)))?;
+                c.api(&f, vb.set_tex_coords(k, Some(&va), s, Some(&b)))?;
             }
             let ob = vb.as_object3d();
             apply_o3d(c, ty, &ob, o)?;
@@ -1256,8 +1254,8 @@ fn parse_object(st: &mut State, c: &mut Cur, ty: u8) -> LoadResult<Object3D> {
 
 fn parse_keyframes(st: &mut State, c: &mut Cur) -> LoadResult<Object3D> {
     let o = parse_o3d(st, c)?;
-    let interp = c.enum8("interpolation", |v| (176..=180).contains(&v))?;
-    let repeat = c.enum8("repeatMode", |v| v == 192 || v == 193)?;
+    let interp = c.mode::<Interpolation>("interpolation")?;
+    let repeat = c.mode::<RepeatMode>("repeatMode")?;
     let enc = c.enum8("encoding", |v| v <= 2)?;
     let duration = c.int("duration")?;
     if duration == 0 {
@@ -1273,7 +1271,7 @@ fn parse_keyframes(st: &mut State, c: &mut Cur) -> LoadResult<Object3D> {
     if keys == 0 {
         return Err(c.err("keyframeCount", "no keyframes"));
     }
-    if (interp == 177 || interp == 179) && comps != 4 {
+    if interp.is_quaternion() && comps != 4 {
         return Err(c.err("componentCount", "SLERP and SQUAD need 4 components"));
     }
     if first as usize >= keys || last as usize >= keys {
@@ -1296,11 +1294,8 @@ fn parse_keyframes(st: &mut State, c: &mut Cur) -> LoadResult<Object3D> {
             format!("{keys} keyframes of {comps} components overrun the object data"),
         ));
     }
-    let ks = c.api(
-        "keyframeCount",
-        KeyframeSequence::new(keys as i32, comps as i32, interp),
-    )?;
-    c.api("repeatMode", ks.set_repeat_mode(repeat))?;
+    let ks = c.api("keyframeCount", KeyframeSequence::new(keys, comps, interp))?;
+    ks.set_repeat_mode(repeat);
     c.api("duration", ks.set_duration(duration))?;
     let mut bias = vec![0.0f32; comps];
     let mut scale = vec![0.0f32; comps];
@@ -1328,11 +1323,11 @@ fn parse_keyframes(st: &mut State, c: &mut Cur) -> LoadResult<Object3D> {
                 _ => bias[j] + (scale[j] * c.u16("value")? as f32) / 65535.0,
             };
         }
-        c.api("keyframe", ks.set_keyframe(k as i32, t as i32, &values))?;
+        c.api("keyframe", ks.set_keyframe(k, t as i32, &values))?;
     }
     c.api(
         "validRangeFirst",
-        ks.set_valid_range(first as i32, last as i32),
+        ks.set_valid_range(first as usize, last as usize),
     )?;
     let ob = ks.as_object3d();
     apply_o3d(c, 19, &ob, o)?;
@@ -1374,7 +1369,10 @@ fn parse_skin(
         if first as i64 + count as i64 > 65535 {
             return Err(c.err(&format!("vertexCount[{k}]"), "vertices past index 65535"));
         }
-        c.api(&f, mesh.add_transform(&b, weight, first, count))?;
+        c.api(
+            &f,
+            mesh.add_transform(&b, weight, first as usize, count as usize),
+        )?;
     }
     Ok(mesh)
 }

@@ -2,7 +2,9 @@
 
 use std::io::Cursor;
 
-use image::{ColorType, ImageFormat, ImageReader, Limits};
+use image::{ColorType, ImageReader, Limits};
+
+use crate::modes::ImageFormat;
 
 use super::{LoadError, LoadResult, Loader};
 use crate::Image2D;
@@ -61,7 +63,7 @@ pub(crate) fn decode(loader: &mut Loader, bytes: &[u8]) -> LoadResult<Image2D> {
     let need = w * h * decoded + if decoded != kept { w * h * kept } else { 0 };
     loader.charge(need, || format!("a {w}x{h} PNG"))?;
     let mut reader = ImageReader::new(Cursor::new(bytes));
-    reader.set_format(ImageFormat::Png);
+    reader.set_format(image::ImageFormat::Png);
     let mut limits = Limits::default();
     limits.max_image_width = Some(MAX_SIDE);
     limits.max_image_height = Some(MAX_SIDE);
@@ -73,14 +75,15 @@ pub(crate) fn decode(loader: &mut Loader, bytes: &[u8]) -> LoadResult<Image2D> {
         .map_err(|e| LoadError::file(format!("invalid PNG: {e}")))?;
     let (w, h) = (img.width() as i32, img.height() as i32);
     let (format, pixels) = match img.color() {
-        ColorType::L8 | ColorType::L16 => (Image2D::LUMINANCE, img.into_luma8().into_raw()),
-        ColorType::La8 | ColorType::La16 => {
-            (Image2D::LUMINANCE_ALPHA, img.into_luma_alpha8().into_raw())
-        }
+        ColorType::L8 | ColorType::L16 => (ImageFormat::Luminance, img.into_luma8().into_raw()),
+        ColorType::La8 | ColorType::La16 => (
+            ImageFormat::LuminanceAlpha,
+            img.into_luma_alpha8().into_raw(),
+        ),
         ColorType::Rgb8 | ColorType::Rgb16 | ColorType::Rgb32F => {
-            (Image2D::RGB, img.into_rgb8().into_raw())
+            (ImageFormat::Rgb, img.into_rgb8().into_raw())
         }
-        _ => (Image2D::RGBA, img.into_rgba8().into_raw()),
+        _ => (ImageFormat::Rgba, img.into_rgba8().into_raw()),
     };
     Image2D::with_pixel_vec(format, w, h, pixels)
         .map_err(|e| LoadError::file(format!("PNG image rejected: {e}")))

@@ -1,7 +1,7 @@
 //! Rendering a loaded scene the way the corpus reference images were made (the code path of
 //! the `m3g` tool, shared with the tests).
 
-use crate::{Graphics3D, Object3D, Object3DExt, World};
+use crate::{Error, Graphics3D, Object3D, Object3DExt, RenderHints, Result, World};
 use gles_cm_core::{ColorFormat, DepthFormat, Target, TargetFormat};
 
 /// What [`render_roots`] renders into, which decides the format a World's background image
@@ -29,17 +29,19 @@ pub fn render_roots(
     height: u32,
     clamp_after_lighting: bool,
     target_kind: RenderTarget,
-) -> std::result::Result<Vec<u8>, String> {
+) -> Result<Vec<u8>> {
     let world = roots
         .iter()
         .find_map(|r| r.downcast::<World>())
         .ok_or_else(|| {
             let first = roots.first().map_or("nothing", |r| r.class_name());
-            format!("no World among the root objects (the first root is a {first})")
+            Error::IllegalArgument(format!(
+                "no World among the root objects (the first root is a {first})"
+            ))
         })?;
     world
         .animate(time_ms)
-        .map_err(|e| format!("animate({time_ms}) failed: {e}"))?;
+        .map_err(|e| e.context(&format!("animate({time_ms}) failed")))?;
     let target = Target::new(
         width,
         height,
@@ -52,13 +54,13 @@ pub fn render_roots(
     let mut g = Graphics3D::new();
     g.set_clamp_after_lighting(clamp_after_lighting);
     match target_kind {
-        RenderTarget::Graphics => g.bind_graphics_target(target, true, 0),
-        RenderTarget::RgbaImage => g.bind_target(target, true, 0),
+        RenderTarget::Graphics => g.bind_graphics_target(target, true, RenderHints::empty()),
+        RenderTarget::RgbaImage => g.bind_target(target, true, RenderHints::empty()),
     }
-    .map_err(|e| format!("cannot bind a {width}x{height} target: {e}"))?;
+    .map_err(|e| e.context(&format!("cannot bind a {width}x{height} target")))?;
     let r = g.render_world(&world);
     let target = g.release_target().expect("a core target");
-    r.map_err(|e| format!("render(World) failed: {e}"))?;
+    r.map_err(|e| e.context("render(World) failed"))?;
     let (w, h) = (width as usize, height as usize);
     let mut out = Vec::with_capacity(w * h * 3);
     for y in 0..h {

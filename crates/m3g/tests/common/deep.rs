@@ -23,11 +23,11 @@ pub const DEPTH: usize = 100_000;
 pub fn deep_world() -> World {
     let positions = VertexArray::new(4, 3, 2).unwrap();
     positions
-        .set_shorts(0, 4, &[-1, -1, 0, 1, -1, 0, -1, 1, 0, 1, 1, 0])
+        .set_shorts(0, &[-1, -1, 0, 1, -1, 0, -1, 1, 0, 1, 1, 0])
         .unwrap();
     let normals = VertexArray::new(4, 3, 1).unwrap();
     normals
-        .set_bytes(0, 4, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127])
+        .set_bytes(0, &[0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127])
         .unwrap();
     let vertices = VertexBuffer::new();
     vertices.set_positions(Some(&positions), 1.0, None).unwrap();
@@ -36,7 +36,7 @@ pub fn deep_world() -> World {
         .unwrap()
         .as_index_buffer();
     let red = Material::new();
-    red.set_color(Material::DIFFUSE, 0xFFFF0000u32 as i32)
+    red.set_color(MaterialColor::DIFFUSE, Color(0xFFFF0000))
         .unwrap();
     let look = Appearance::new();
     look.set_material(Some(&red));

@@ -595,7 +595,7 @@ fn setup(gl: &Api, scene: &Scene, mode: Mode) -> Vec<GLuint> {
 /// format) each frame; the image is the frame at `image_ms`.
 pub fn run_m3g(file: &Path, image_ms: i32) -> Result<(), String> {
     use gles_cm_core::{ColorFormat, DepthFormat, Target, TargetFormat};
-    use m3g::{Graphics3D, Loader, Object3DExt, World};
+    use m3g::{Graphics3D, Loader, Object3DExt, RenderHints, World};
 
     let roots = match Loader::load_path(file) {
         Ok(r) => r,
@@ -625,7 +625,9 @@ pub fn run_m3g(file: &Path, image_ms: i32) -> Result<(), String> {
                 .animate(time)
                 .map_err(|e| format!("animate: {e}"))?;
             let t = self.target.take().ok_or("no target")?;
-            self.g.bind_target(t, true, 0).map_err(|e| e.to_string())?;
+            self.g
+                .bind_target(t, true, RenderHints::empty())
+                .map_err(|e| e.to_string())?;
             let r = self.g.render_world(&self.world);
             self.target = self.g.release_target();
             r.map_err(|e| format!("render: {e}"))
@@ -720,7 +722,7 @@ pub fn mosaic(tiles: &[gles_cm_core::Target]) -> gles_cm_core::Target {
 /// target (the corpus references' size and conditions); the image is the [`mosaic`] of them.
 pub fn run_m3g_corpus(dir: &Path) -> Result<(), String> {
     use gles_cm_core::{ColorFormat, DepthFormat, Target, TargetFormat};
-    use m3g::{Graphics3D, Loader, Object3DExt, World};
+    use m3g::{Graphics3D, Loader, Object3DExt, RenderHints, World};
 
     let mut worlds = Vec::new();
     for file in corpus_files(dir)? {
@@ -745,7 +747,9 @@ pub fn run_m3g_corpus(dir: &Path) -> Result<(), String> {
             for (world, slot) in self.worlds.iter().zip(&mut self.targets) {
                 world.animate(0).map_err(|e| format!("animate: {e}"))?;
                 let t = slot.take().ok_or("no target")?;
-                self.g.bind_target(t, true, 0).map_err(|e| e.to_string())?;
+                self.g
+                    .bind_target(t, true, RenderHints::empty())
+                    .map_err(|e| e.to_string())?;
                 let r = self.g.render_world(world);
                 *slot = self.g.release_target();
                 r.map_err(|e| format!("render: {e}"))?;

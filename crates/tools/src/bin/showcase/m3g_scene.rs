@@ -21,14 +21,14 @@ fn checker(size: i32, a: [u8; 3], b: [u8; 3], cells: i32) -> Image2D {
             px.extend_from_slice(if odd { &a } else { &b });
         }
     }
-    Image2D::with_pixels(Image2D::RGB, size, size, &px).expect("image")
+    Image2D::with_pixels(ImageFormat::Rgb, size, size, &px).expect("image")
 }
 
 fn texture(image: &Image2D) -> Result<Texture2D> {
     let t = Texture2D::new(image)?;
-    t.set_filtering(Texture2D::FILTER_LINEAR, Texture2D::FILTER_LINEAR)?;
-    t.set_wrapping(Texture2D::WRAP_REPEAT, Texture2D::WRAP_REPEAT)?;
-    t.set_blending(Texture2D::FUNC_MODULATE)?;
+    t.set_filtering(TextureFilter::Linear, TextureFilter::Linear)?;
+    t.set_wrapping(TextureWrap::Repeat, TextureWrap::Repeat);
+    t.set_blending(TextureFunction::Modulate);
     Ok(t)
 }
 
@@ -55,11 +55,11 @@ fn cube() -> Result<(VertexBuffer, IndexBuffer)> {
         }
     }
     let positions = VertexArray::new(24, 3, 2)?;
-    positions.set_shorts(0, 24, &pos)?;
+    positions.set_shorts(0, &pos)?;
     let normals = VertexArray::new(24, 3, 1)?;
-    normals.set_bytes(0, 24, &nrm)?;
+    normals.set_bytes(0, &nrm)?;
     let texcoords = VertexArray::new(24, 2, 2)?;
-    texcoords.set_shorts(0, 24, &tex)?;
+    texcoords.set_shorts(0, &tex)?;
     let vb = VertexBuffer::new();
     vb.set_positions(Some(&positions), 1.0, None)?;
     vb.set_normals(Some(&normals))?;
@@ -73,15 +73,14 @@ fn floor(half: i16, y: i16, reps: i16) -> Result<(VertexBuffer, IndexBuffer)> {
     let positions = VertexArray::new(4, 3, 2)?;
     positions.set_shorts(
         0,
-        4,
         &[
             -half, y, half, half, y, half, -half, y, -half, half, y, -half,
         ],
     )?;
     let normals = VertexArray::new(4, 3, 1)?;
-    normals.set_bytes(0, 4, &[0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127, 0])?;
+    normals.set_bytes(0, &[0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127, 0])?;
     let texcoords = VertexArray::new(4, 2, 2)?;
-    texcoords.set_shorts(0, 4, &[0, reps, reps, reps, 0, 0, reps, 0])?;
+    texcoords.set_shorts(0, &[0, reps, reps, reps, 0, 0, reps, 0])?;
     let vb = VertexBuffer::new();
     vb.set_positions(Some(&positions), 1.0, None)?;
     vb.set_normals(Some(&normals))?;
@@ -96,7 +95,7 @@ fn floor(half: i16, y: i16, reps: i16) -> Result<(VertexBuffer, IndexBuffer)> {
 pub fn build(aspect: f32) -> Result<World> {
     let world = World::new();
     let background = Background::new();
-    background.set_color(SKY as i32);
+    background.set_color(Color(SKY));
     world.set_background(Some(&background));
 
     let camera = Camera::new();
@@ -107,23 +106,23 @@ pub fn build(aspect: f32) -> Result<World> {
     world.set_active_camera(&camera);
 
     let sun = Light::new(); // directional, shining along its -Z
-    sun.set_color(0xFFF0E0);
+    sun.set_color(Color(0xFFF0E0));
     sun.set_orientation(-50.0, 1.0, 0.4, 0.0)?;
     world.add_child(&sun)?;
     let ambient = Light::new();
-    ambient.set_mode(Light::AMBIENT)?;
-    ambient.set_color(0x404858);
+    ambient.set_mode(LightMode::Ambient);
+    ambient.set_color(Color(0x404858));
     world.add_child(&ambient)?;
 
     let fog = Fog::new();
-    fog.set_mode(Fog::LINEAR)?;
+    fog.set_mode(FogMode::Linear);
     fog.set_linear(6.0, 30.0);
-    fog.set_color(SKY as i32);
+    fog.set_color(Color(SKY));
 
     let shiny = Material::new();
-    shiny.set_color(Material::DIFFUSE, 0xFFFFFFFFu32 as i32)?;
-    shiny.set_color(Material::AMBIENT, 0xFFFFFF)?;
-    shiny.set_color(Material::SPECULAR, 0xFFFFFF)?;
+    shiny.set_color(MaterialColor::DIFFUSE, Color(0xFFFFFFFF))?;
+    shiny.set_color(MaterialColor::AMBIENT, Color(0xFFFFFF))?;
+    shiny.set_color(MaterialColor::SPECULAR, Color(0xFFFFFF))?;
     shiny.set_shininess(24.0)?;
     let cube_look = Appearance::new();
     cube_look.set_material(Some(&shiny));
@@ -139,14 +138,14 @@ pub fn build(aspect: f32) -> Result<World> {
 
     // Orientation keyframes: a full turn about a tilted axis, as quaternions (x, y, z, w).
     let axis = glam::Vec3::new(0.35, 1.0, 0.2).normalize();
-    let spin = KeyframeSequence::new(5, 4, KeyframeSequence::SLERP)?;
+    let spin = KeyframeSequence::new(5, 4, Interpolation::Slerp)?;
     for k in 0..5 {
         let q = glam::Quat::from_axis_angle(axis, k as f32 * std::f32::consts::FRAC_PI_2);
-        spin.set_keyframe(k, k * 1000, &q.to_array())?;
+        spin.set_keyframe(k, k as i32 * 1000, &q.to_array())?;
     }
     spin.set_duration(4000)?;
-    spin.set_repeat_mode(KeyframeSequence::LOOP)?;
-    let track = AnimationTrack::new(&spin, AnimationTrack::ORIENTATION)?;
+    spin.set_repeat_mode(RepeatMode::Loop);
+    let track = AnimationTrack::new(&spin, AnimationProperty::Orientation)?;
     track.set_controller(Some(&AnimationController::new()));
     cube.add_animation_track(&track)?;
 
@@ -173,7 +172,11 @@ pub fn render(world: &World, time_ms: i32, width: u32, height: u32) -> Result<Ta
         stencil_bits: 0,
     };
     let mut g = Graphics3D::new();
-    g.bind_target(Target::new(width, height, format), true, 0)?;
+    g.bind_target(
+        Target::new(width, height, format),
+        true,
+        RenderHints::empty(),
+    )?;
     let drawn = g.render_world(world);
     let target = g.release_target().expect("the bound target");
     drawn.map(|()| target)
