@@ -59,8 +59,7 @@ pub fn pow(x: f32, y: f32) -> f32 {
                                 + r * (1.0 / 5040.0
                                     + r * (1.0 / 40320.0
                                         + r * (1.0 / 362_880.0
-                                            + r * (1.0 / 3_628_800.0
-                                                + r / 39_916_800.0))))))))));
+                                            + r * (1.0 / 3_628_800.0 + r / 39_916_800.0))))))))));
     // 2^k from k's bits in the rounded sum (an integer add and shift, no conversion).
     let k_bits = rounded.to_bits().wrapping_sub(ROUNDER.to_bits());
     let scale = f64::from_bits(k_bits.wrapping_add(1023) << 52);
@@ -125,7 +124,10 @@ mod tests {
         assert_eq!(pow(2.0, 128.0), f32::INFINITY, "overflow");
         assert_eq!(pow(0.5, 128.0), 0.5f32.powi(128), "2^-128 is subnormal");
         assert_eq!(pow(1e-30, 64.0), 0.0, "underflow");
-        assert_eq!(pow(f32::MIN_POSITIVE / 4.0, 0.5), (f32::MIN_POSITIVE / 4.0).sqrt());
+        assert_eq!(
+            pow(f32::MIN_POSITIVE / 4.0, 0.5),
+            (f32::MIN_POSITIVE / 4.0).sqrt()
+        );
     }
 
     /// Within one f32 step of the exact power everywhere the lighting equation can ask

@@ -555,7 +555,11 @@ fn power_rows() -> Vec<PowerRow> {
             };
             for k in 0..samples {
                 // n ⊙ ĥ of a unit normal is in [0, 1]; an unnormalized one reaches past 1.
-                let x = if k % 4 == 3 { r.range(1.0, 2.0) } else { r.next() };
+                let x = if k % 4 == 3 {
+                    r.range(1.0, 2.0)
+                } else {
+                    r.next()
+                };
                 let exact = (x as f64).powf(y as f64);
                 let (ours, libm) = (pow(x, y), x.powf(y));
                 for ((worst, off), v) in [(&mut row.ours, ours), (&mut row.libm, libm)] {
