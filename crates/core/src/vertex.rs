@@ -10,6 +10,7 @@ use super::state::RenderState;
 use super::{OutOfMemory, TEXTURE_UNITS};
 
 pub mod lighting;
+pub mod power;
 mod transform;
 
 use super::lanes::{Lane, LANES};
@@ -215,8 +216,9 @@ mod format {
 #[inline(always)]
 fn component<const F: u8>(b: &[u8], k: usize) -> f32 {
     use format::*;
-    let word = |k: usize| [b[4 * k], b[4 * k + 1], b[4 * k + 2], b[4 * k + 3]];
-    let short = |k: usize| i16::from_ne_bytes([b[2 * k], b[2 * k + 1]]);
+    // Whole-word slices, not four byte indexings: one bounds check and one load per word.
+    let word = |k: usize| -> [u8; 4] { b[4 * k..4 * k + 4].try_into().expect("a word") };
+    let short = |k: usize| i16::from_ne_bytes(b[2 * k..2 * k + 2].try_into().expect("a short"));
     match F {
         FLOAT => f32::from_ne_bytes(word(k)),
         FIXED => fixed::to_f32(i32::from_ne_bytes(word(k))),
@@ -702,7 +704,7 @@ fn light(
     idx: &[usize; LANES],
     m: usize,
 ) {
-    let (color, back_color) = stage.colors_lanes(idx, true, None);
+    let (color, back_color) = stage.colors_lanes(idx, true, None, None);
     for (k, &i) in idx.iter().enumerate().take(m) {
         let v = &mut vertices[i - first];
         v.color = Vec4::new(color[0][k], color[1][k], color[2][k], color[3][k]);

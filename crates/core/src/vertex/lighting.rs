@@ -28,6 +28,7 @@
 
 use glam::{Vec3, Vec4};
 
+use super::power::{pow, pow_lanes};
 use crate::lanes::{max_ps, min_ps, Lane, LANES};
 use crate::state::{Light, Lighting, Material};
 
@@ -249,12 +250,13 @@ impl Prepared {
                 }
             }
         }
-        // The powers: a library call per lane that needs one, so a loop of its own.
+        // The powers, computed in every lane and kept where `shade` computes one.
         let mut power = [1.0; LANES];
         if m.shininess != 0.0 {
+            let p = pow_lanes(&ndoth, m.shininess);
             for j in 0..LANES {
                 if ndotvp[j] != 0.0 && !(pl.pow_free[f] && ndoth[j] <= 2.0) {
-                    power[j] = ndoth[j].powf(m.shininess);
+                    power[j] = p[j];
                 }
             }
         }
@@ -338,7 +340,7 @@ impl Prepared {
                 Some((s, cos)) => {
                     let dot = (-vp).dot(s);
                     if dot >= cos {
-                        dot.max(0.0).powf(l.spot_exponent)
+                        pow(dot.max(0.0), l.spot_exponent)
                     } else {
                         0.0
                     }
@@ -361,7 +363,7 @@ impl Prepared {
                 let power = if m.shininess == 0.0 || (pl.pow_free[f] && ndoth <= 2.0) {
                     1.0
                 } else {
-                    ndoth.powf(m.shininess)
+                    pow(ndoth, m.shininess)
                 };
                 sum += pl.specular[f] * power;
             }
@@ -458,15 +460,14 @@ fn light_lanes(
         }
     }
     if let Some((s, cos)) = pl.spot {
-        // A library call per lane, as in `shade`.
+        let (mut dot, mut base) = ([0.0; LANES], [0.0; LANES]);
         for j in 0..LANES {
-            let dot = -vp[0][j] * s.x + -vp[1][j] * s.y + -vp[2][j] * s.z;
-            let spot = if dot >= cos {
-                dot.max(0.0).powf(pl.light.spot_exponent)
-            } else {
-                0.0
-            };
-            k[j] *= spot;
+            dot[j] = -vp[0][j] * s.x + -vp[1][j] * s.y + -vp[2][j] * s.z;
+            base[j] = dot[j].max(0.0);
+        }
+        let p = pow_lanes(&base, pl.light.spot_exponent);
+        for j in 0..LANES {
+            k[j] *= if dot[j] >= cos { p[j] } else { 0.0 };
         }
     }
     (vp, h, k)

@@ -73,8 +73,10 @@ pub(super) struct Stage<'s, 'd> {
     attenuate: bool,
     planes: usize,
     two_side: bool,
-    /// [`write_lanes`](Self::write_lanes) applies: no skinning and no texgen.
+    /// [`write_lanes`](Self::write_lanes) applies: no skinning.
     pub batched: bool,
+    /// Some unit's coordinates are generated from the normal (texgen).
+    texgen: bool,
     /// The texture coordinates of units whose are constant over the draw (the others
     /// hold the default).
     template_tex: [Vec4; TEXTURE_UNITS],
@@ -114,7 +116,7 @@ impl<'s, 'd> Stage<'s, 'd> {
             .as_ref()
             .is_some_and(|l| l.two_side && !matches!(draw.primitive, Primitive::Points))
             && !draw.primitive.is_line();
-        let batched = state.matrix_palette.is_none() && state.texgen.iter().all(Option::is_none);
+        let batched = state.matrix_palette.is_none();
         let tex: [TexSource<'d>; TEXTURE_UNITS] = std::array::from_fn(|u| {
             let m = state.texture_matrices[u];
             let matrix = (m != Mat4::IDENTITY).then_some(m);
@@ -185,6 +187,7 @@ impl<'s, 'd> Stage<'s, 'd> {
             planes: state.clip_planes.len().min(MAX_USER_PLANES),
             two_side,
             batched,
+            texgen: state.texgen.iter().any(Option::is_some),
             provoking,
             deferred,
         }
@@ -343,10 +346,14 @@ impl<'s, 'd> Stage<'s, 'd> {
         } else {
             [[0.0; LANES]; 4]
         };
-        let (color, back_color) = self.colors_lanes(idx, light, self.need_eye.then_some(&eye));
+        // Texgen reads the normals; lighting shares them then.
+        let normal = self.texgen.then(|| self.normals_lanes(idx));
+        let (color, back_color) =
+            self.colors_lanes(idx, light, self.need_eye.then_some(&eye), normal.as_ref());
         // `out` holds `template()`: only what varies per vertex is written, component by
         // component (assembling vectors from lanes costs more than the stores).
         if self.points || self.planes > 0 {
+            let normal = normal.unwrap_or([[0.0; LANES]; 3]);
             for (k, v) in out.iter_mut().enumerate().take(LANES) {
                 self.finish(
                     idx[k],
@@ -354,8 +361,7 @@ impl<'s, 'd> Stage<'s, 'd> {
                     lane4(&color, k),
                     lane4(&back_color, k),
                     lane4(&eye, k),
-                    // Only texgen reads the normal here, and with texgen nothing is batched.
-                    Vec3::ZERO,
+                    Vec3::new(normal[0][k], normal[1][k], normal[2][k]),
                     v,
                 );
             }
@@ -368,42 +374,33 @@ impl<'s, 'd> Stage<'s, 'd> {
             v.eye = Vec3::new(eye[0][k], eye[1][k], eye[2][k]);
         }
         if self.tex_varies {
-            // Without texgen (not batched) a unit that varies is an array.
             for (u, src) in self.tex.iter().enumerate() {
-                if let TexSource::Array(a, matrix) = *src {
-                    let mut tc = [[0.0; LANES]; 4];
-                    a.gather(idx, &mut tc);
-                    if let Some(m) = matrix {
-                        tc = mat4_lanes(&m, &tc);
+                let (mut tc, matrix) = match *src {
+                    TexSource::Constant(_) => continue,
+                    TexSource::Array(a, matrix) => {
+                        let mut tc = [[0.0; LANES]; 4];
+                        a.gather(idx, &mut tc);
+                        (tc, matrix)
                     }
-                    for (k, v) in out.iter_mut().enumerate().take(LANES) {
-                        store_lane(&mut v.tex[u], &tc, k);
+                    TexSource::Gen(g, matrix) => {
+                        let n = normal.as_ref().expect("texgen reads the normals");
+                        (texgen_lanes(g, n, &eye), matrix)
                     }
+                };
+                if let Some(m) = matrix {
+                    tc = mat4_lanes(&m, &tc);
+                }
+                for (k, v) in out.iter_mut().enumerate().take(LANES) {
+                    store_lane(&mut v.tex[u], &tc, k);
                 }
             }
         }
     }
 
-    /// The front and back colors of vertices `idx` for [`write_lanes`](Self::write_lanes):
-    /// lit when lighting is on and `light` (see [`lit`](Self::lit)), otherwise the given
-    /// colors clamped. `eye` holds their eye positions when the caller has them; they are
-    /// worked out here when a light needs them and it does not.
+    /// The eye-space normals of vertices `idx`, as `to_eye` and `write` derive them: the
+    /// normal matrix, the rescale factor, and with `GL_NORMALIZE` unit length (or zero).
     #[inline(always)]
-    pub fn colors_lanes(
-        &self,
-        idx: &[usize; LANES],
-        light: bool,
-        eye: Option<&[Lane<f32>; 4]>,
-    ) -> ([Lane<f32>; 4], [Lane<f32>; 4]) {
-        let mut given = [[0.0; LANES]; 4];
-        self.draw.color.gather(idx, &mut given);
-        let Some(l) = self.lighting.as_ref().filter(|_| light) else {
-            for v in given.iter_mut().flatten() {
-                *v = min_ps(max_ps(*v, 0.0), 1.0);
-            }
-            return (given, given);
-        };
-        // Batched, only lighting reads the normal (texgen is not batched).
+    fn normals_lanes(&self, idx: &[usize; LANES]) -> [Lane<f32>; 3] {
         let mut n = [[0.0; LANES]; 3];
         self.draw.normal.gather(idx, &mut n);
         let mut normal = [[0.0; LANES]; 3];
@@ -417,6 +414,33 @@ impl<'s, 'd> Stage<'s, 'd> {
         if self.state.normalize {
             normalize_lanes(&mut normal);
         }
+        normal
+    }
+
+    /// The front and back colors of vertices `idx` for [`write_lanes`](Self::write_lanes):
+    /// lit when lighting is on and `light` (see [`lit`](Self::lit)), otherwise the given
+    /// colors clamped. `eye` and `normal` hold their eye positions and normals when the
+    /// caller has them; they are worked out here when lighting needs them and it does not.
+    #[inline(always)]
+    pub fn colors_lanes(
+        &self,
+        idx: &[usize; LANES],
+        light: bool,
+        eye: Option<&[Lane<f32>; 4]>,
+        normal: Option<&[Lane<f32>; 3]>,
+    ) -> ([Lane<f32>; 4], [Lane<f32>; 4]) {
+        let mut given = [[0.0; LANES]; 4];
+        self.draw.color.gather(idx, &mut given);
+        let Some(l) = self.lighting.as_ref().filter(|_| light) else {
+            for v in given.iter_mut().flatten() {
+                *v = min_ps(max_ps(*v, 0.0), 1.0);
+            }
+            return (given, given);
+        };
+        let mut normal = match normal {
+            Some(n) => *n,
+            None => self.normals_lanes(idx),
+        };
         let computed;
         let eye = match eye {
             Some(eye) => eye,
@@ -553,6 +577,31 @@ fn normalize_lanes(v: &mut [Lane<f32>; 3]) {
     }
 }
 
+/// Generated texture coordinates (s, t, r, 1) of each lane from its eye-space normal and
+/// position, in `finish`'s order: the normal itself, or the eye direction reflected about
+/// the unit normal, e − 2n(n·e) with both made unit first.
+#[inline(always)]
+fn texgen_lanes(g: TexGen, n: &[Lane<f32>; 3], eye: &[Lane<f32>; 4]) -> [Lane<f32>; 4] {
+    let one = [1.0; LANES];
+    match g {
+        TexGen::NormalMap => [n[0], n[1], n[2], one],
+        TexGen::ReflectionMap => {
+            let mut e = [eye[0], eye[1], eye[2]];
+            normalize_lanes(&mut e);
+            let mut u = *n;
+            normalize_lanes(&mut u);
+            let mut r = [[0.0; LANES]; 3];
+            for k in 0..LANES {
+                let d = u[0][k] * e[0][k] + u[1][k] * e[1][k] + u[2][k] * e[2][k];
+                for a in 0..3 {
+                    r[a][k] = e[a][k] - 2.0 * u[a][k] * d;
+                }
+            }
+            [r[0], r[1], r[2], one]
+        }
+    }
+}
+
 #[inline]
 fn clamp01(c: Vec4) -> Vec4 {
     // max/min rather than clamp: NaN becomes 0 instead of propagating.
@@ -675,7 +724,7 @@ mod tests {
             position: dir.extend(0.0),
             ..Light::default()
         };
-        for case in 0..256u32 {
+        for case in 0..512u32 {
             let mut s = RenderState::new(8, 8);
             s.modelview = Mat4::from_scale(Vec3::new(1.5, 0.5, 2.0))
                 * Mat4::from_rotation_x(0.4)
@@ -752,6 +801,15 @@ mod tests {
                     stride: 8,
                     normalized: false,
                 });
+            }
+            if case & 256 != 0 {
+                // Texgen: normals on unit 0 (under a texture matrix when case & 2), the
+                // reflected eye direction on unit 1 (replacing its constant).
+                s.texgen[0] = Some(TexGen::NormalMap);
+                s.texgen[1] = Some(TexGen::ReflectionMap);
+                if case & 2 != 0 {
+                    s.texture_matrices[0] = Mat4::from_scale(Vec3::new(0.5, -2.0, 1.0));
+                }
             }
             let stage = Stage::new(&s, &d);
             assert!(stage.batched);
@@ -945,9 +1003,9 @@ mod tests {
         let n = pos.len() / 3;
         let all: Vec<u16> = (0..n as u16).collect();
         use ShadeModel::{Flat, Smooth};
-        // Texgen keeps a draw on the one-vertex path, where `provoking` does what `deferred`
-        // does on the batched one.
-        for (shade, light_w, two_side, prim, texgen) in [
+        // The matrix palette keeps a draw on the one-vertex path, where `provoking` does
+        // what `deferred` does on the batched one. Positional lights come with texgen.
+        for (shade, light_w, two_side, prim, palette) in [
             (Flat, 0.0, false, Primitive::Triangles, false),
             (Flat, 0.0, true, Primitive::Triangles, false),
             (Flat, 1.0, true, Primitive::Triangles, false),
@@ -960,8 +1018,12 @@ mod tests {
         ] {
             let mut s = RenderState::new(48, 48);
             s.shade_model = shade;
-            if texgen {
+            if light_w == 1.0 {
                 s.texgen[0] = Some(TexGen::NormalMap);
+                s.texgen[1] = Some(TexGen::ReflectionMap);
+            }
+            if palette {
+                s.matrix_palette = Some(vec![Mat4::IDENTITY]);
             }
             s.normalize = true;
             let mut lt = Lighting {
@@ -1006,8 +1068,8 @@ mod tests {
             let step = if prim == Primitive::Lines { 2 } else { 3 };
             let stage = Stage::new(&s, &range);
             assert_eq!(stage.provoking, (shade == Flat).then_some((0, step)));
-            assert_eq!(stage.batched, !texgen);
-            assert_eq!(stage.deferred.is_some(), !texgen, "{prim:?}");
+            assert_eq!(stage.batched, !palette);
+            assert_eq!(stage.deferred.is_some(), !palette, "{prim:?}");
             // Indexed, every vertex is lit: the reference.
             let lit_all = image(Indices::U16(&all));
             let provoking_only = image(Indices::Range { first: 0, count: n });
