@@ -22,6 +22,44 @@ use crate::lanes::{Lane, LANES};
 /// is then in the low bits of the sum.
 const ROUNDER: f64 = 6_755_399_441_055_744.0;
 
+/// 1/(2k + 1) for k = 0 to 7: ln m = 2s · Σ s^(2k)/(2k + 1).
+const LOG_SERIES: [f64; 8] = [
+    1.0,
+    1.0 / 3.0,
+    1.0 / 5.0,
+    1.0 / 7.0,
+    1.0 / 9.0,
+    1.0 / 11.0,
+    1.0 / 13.0,
+    1.0 / 15.0,
+];
+
+/// 1/k! for k = 0 to 11: e^r = Σ r^k/k!.
+const EXP_SERIES: [f64; 12] = [
+    1.0,
+    1.0,
+    1.0 / 2.0,
+    1.0 / 6.0,
+    1.0 / 24.0,
+    1.0 / 120.0,
+    1.0 / 720.0,
+    1.0 / 5040.0,
+    1.0 / 40320.0,
+    1.0 / 362_880.0,
+    1.0 / 3_628_800.0,
+    1.0 / 39_916_800.0,
+];
+
+/// Σ c_k·x^k by Horner's rule, c₀ + x·(c₁ + x·(… + x·c_n)).
+#[inline(always)]
+fn horner<const N: usize>(c: &[f64; N], x: f64) -> f64 {
+    let mut acc = c[N - 1];
+    for &c in c[..N - 1].iter().rev() {
+        acc = c + x * acc;
+    }
+    acc
+}
+
 /// x^y for x ≥ 0 and finite y ≥ 0, as `powf` defines it: x⁰ = 1 for every x (NaN and ∞
 /// included), 0^y = 0 and ∞^y = ∞ for y > 0, NaN in gives NaN out. Overflow gives ∞ and
 /// underflow 0 (or a subnormal), as the f32 rounding of the exact value would.
@@ -37,11 +75,7 @@ pub fn pow(x: f32, y: f32) -> f32 {
     let e = e as f64 + if high { 1.0 } else { 0.0 };
     let s = (m - 1.0) / (m + 1.0);
     let s2 = s * s;
-    let series = 1.0
-        + s2 * (1.0 / 3.0
-            + s2 * (1.0 / 5.0
-                + s2 * (1.0 / 7.0
-                    + s2 * (1.0 / 9.0 + s2 * (1.0 / 11.0 + s2 * (1.0 / 13.0 + s2 / 15.0))))));
+    let series = horner(&LOG_SERIES, s2);
     let log2 = e + 2.0 * s * series * std::f64::consts::LOG2_E;
     // 2^t, t clamped to where 2^k is a normal f64: beyond ±1022 the f32 result is 0 or ∞
     // either way.
@@ -49,17 +83,7 @@ pub fn pow(x: f32, y: f32) -> f32 {
     let rounded = t + ROUNDER;
     let k = rounded - ROUNDER;
     let r = (t - k) * std::f64::consts::LN_2;
-    let exp_r = 1.0
-        + r * (1.0
-            + r * (1.0 / 2.0
-                + r * (1.0 / 6.0
-                    + r * (1.0 / 24.0
-                        + r * (1.0 / 120.0
-                            + r * (1.0 / 720.0
-                                + r * (1.0 / 5040.0
-                                    + r * (1.0 / 40320.0
-                                        + r * (1.0 / 362_880.0
-                                            + r * (1.0 / 3_628_800.0 + r / 39_916_800.0))))))))));
+    let exp_r = horner(&EXP_SERIES, r);
     // 2^k from k's bits in the rounded sum (an integer add and shift, no conversion).
     let k_bits = rounded.to_bits().wrapping_sub(ROUNDER.to_bits());
     let scale = f64::from_bits(k_bits.wrapping_add(1023) << 52);
