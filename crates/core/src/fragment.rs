@@ -714,7 +714,10 @@ impl SpanInterp {
 }
 
 /// The routine for every key: each enabled operation, per pixel, in the specification's order.
-#[multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
+#[cfg_attr(
+    not(fuzzing),
+    multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
+)]
 fn general<'a>(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'a>) {
     let interp = if t.flat.is_some() {
         SpanInterp::depth_only(t, span)

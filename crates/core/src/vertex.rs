@@ -1,7 +1,7 @@
 //! The vertex stage: fetch any array type to f32, transform to eye and clip space (with
 //! matrix-palette skinning), light, transform texture coordinates, derive point sizes and
 //! user clip distances, and carry the per-vertex values the later stages interpolate.
-//! `transform` runs one vertex; `lighting` holds the lighting equation.
+//! `transform` runs eight vertices at a time; `lighting` holds the lighting equation.
 
 use glam::{Vec3, Vec4};
 
@@ -65,52 +65,13 @@ impl AttribArray<'_> {
     /// outside `data` give the default rather than panicking.
     #[inline]
     pub fn fetch(&self, i: usize) -> [f32; 4] {
-        self.fetch_vec4(i).to_array()
+        (self.monomorphized(Element))(self.data, self.stride, i)
     }
 
-    /// [`fetch`](Self::fetch) as a vector. The vertex stage reads through this: a vector
-    /// assembled in registers, where loading one from the stored array stalls on store
-    /// forwarding.
+    /// [`AttribSource::gather`] of an array.
     #[inline]
-    pub fn fetch_vec4(&self, i: usize) -> Vec4 {
-        // Float arrays of 3 or 4 components are nearly every array a vertex reads; they and
-        // 16.16 arrays (texture coordinates too) get a path small enough to inline, with
-        // fixed-size loads.
-        if self.ty == ComponentType::Float && (self.size == 3 || self.size == 4) {
-            return self.words::<false>(i);
-        }
-        if self.ty == ComponentType::Fixed && (2..=4).contains(&self.size) {
-            return self.words::<true>(i);
-        }
-        Vec4::from_array(self.fetch_any(i))
-    }
-
-    /// [`fetch_vec4`](Self::fetch_vec4) of a float array of 3 or 4 components or (`FIXED`)
-    /// a 16.16 array of 2 to 4.
-    #[inline(always)]
-    fn words<const FIXED: bool>(&self, i: usize) -> Vec4 {
-        let base = i * self.stride;
-        let Some(b) = self.data.get(base..base + 4 * self.size) else {
-            return Vec4::from_array(DEFAULT);
-        };
-        let f = |k: usize| {
-            let w = [b[k], b[k + 1], b[k + 2], b[k + 3]];
-            if FIXED {
-                fixed::to_f32(i32::from_ne_bytes(w))
-            } else {
-                f32::from_ne_bytes(w)
-            }
-        };
-        // Float arrays come here with 3 or 4 components only.
-        let z = if FIXED && self.size < 3 { 0.0 } else { f(8) };
-        let w = if self.size == 4 { f(12) } else { 1.0 };
-        Vec4::new(f(0), f(4), z, w)
-    }
-
-    /// Element `i` of any format, through the monomorphized fetch for its format.
-    #[inline(never)]
-    fn fetch_any(&self, i: usize) -> [f32; 4] {
-        (self.element_fn())(self.data, self.stride, i)
+    pub fn gather<const N: usize>(&self, idx: &[usize; LANES], out: &mut [Lane<f32>; N]) {
+        (self.monomorphized(Gather::<N>))(self, idx, out)
     }
 
     /// The array's format as a [`format`] constant.
@@ -129,16 +90,16 @@ impl AttribArray<'_> {
         }
     }
 
-    /// The one-element fetch for this array's format and size.
-    fn element_fn(&self) -> fn(&[u8], usize, usize) -> [f32; 4] {
+    /// `f`'s function for this array's format and size.
+    fn monomorphized<M: Monomorphize>(&self, f: M) -> M::Fn {
         macro_rules! sized {
             ($f:expr) => {
                 match self.size {
-                    0 => element::<{ $f }, 0>,
-                    1 => element::<{ $f }, 1>,
-                    2 => element::<{ $f }, 2>,
-                    3 => element::<{ $f }, 3>,
-                    _ => element::<{ $f }, 4>,
+                    0 => f.at::<{ $f }, 0>(),
+                    1 => f.at::<{ $f }, 1>(),
+                    2 => f.at::<{ $f }, 2>(),
+                    3 => f.at::<{ $f }, 3>(),
+                    _ => f.at::<{ $f }, 4>(),
                 }
             };
         }
@@ -154,37 +115,31 @@ impl AttribArray<'_> {
             _ => sized!(SHORT_NORM),
         }
     }
+}
 
-    /// [`AttribSource::gather`] of an array.
-    #[inline]
-    pub fn gather<const N: usize>(&self, idx: &[usize; LANES], out: &mut [Lane<f32>; N]) {
-        (self.gather_fn::<N>())(self, idx, out)
+/// A fetch monomorphized per element format `F` and size `S`, chosen once per array.
+trait Monomorphize {
+    type Fn;
+    fn at<const F: u8, const S: usize>(self) -> Self::Fn;
+}
+
+/// One element: [`element`].
+struct Element;
+
+impl Monomorphize for Element {
+    type Fn = fn(&[u8], usize, usize) -> [f32; 4];
+    fn at<const F: u8, const S: usize>(self) -> Self::Fn {
+        element::<F, S>
     }
+}
 
-    /// The `LANES`-element fetch for this array's format and size (see [`gather_as`]).
-    fn gather_fn<const N: usize>(&self) -> GatherFn<N> {
-        macro_rules! sized {
-            ($f:expr) => {
-                match self.size {
-                    0 => gather_as::<{ $f }, 0, N>,
-                    1 => gather_as::<{ $f }, 1, N>,
-                    2 => gather_as::<{ $f }, 2, N>,
-                    3 => gather_as::<{ $f }, 3, N>,
-                    _ => gather_as::<{ $f }, 4, N>,
-                }
-            };
-        }
-        use format::*;
-        match self.format() {
-            FLOAT => sized!(FLOAT),
-            FIXED => sized!(FIXED),
-            UBYTE => sized!(UBYTE),
-            UBYTE_NORM => sized!(UBYTE_NORM),
-            BYTE => sized!(BYTE),
-            BYTE_NORM => sized!(BYTE_NORM),
-            SHORT => sized!(SHORT),
-            _ => sized!(SHORT_NORM),
-        }
+/// `LANES` elements, `N` components of each: [`gather_as`].
+struct Gather<const N: usize>;
+
+impl<const N: usize> Monomorphize for Gather<N> {
+    type Fn = GatherFn<N>;
+    fn at<const F: u8, const S: usize>(self) -> Self::Fn {
+        gather_as::<F, S, N>
     }
 }
 
@@ -278,12 +233,10 @@ impl AttribSource<'_> {
         }
     }
 
-    #[inline]
+    /// [`fetch`](Self::fetch) as a vector.
+    #[cfg(test)]
     pub fn fetch_vec4(&self, i: usize) -> Vec4 {
-        match self {
-            AttribSource::Array(a) => a.fetch_vec4(i),
-            AttribSource::Constant(c) => Vec4::from_array(*c),
-        }
+        Vec4::from_array(self.fetch(i))
     }
 
     /// Elements `idx` as rows `out[component][lane]` (the first `N` components), bit for
@@ -635,7 +588,10 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
 /// vertices are written in place: `ClipVertex` is too large for a returned value to be
 /// copied without a `memcpy` call per vertex. Compiled also for AVX2 and SSE4.1 (the
 /// whole vertex computation is inlined here) and chosen at run time.
-#[multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
+#[cfg_attr(
+    not(fuzzing),
+    multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
+)]
 fn fill(
     list: &mut Vec<ClipVertex>,
     stage: &transform::Stage<'_, '_>,
@@ -644,12 +600,6 @@ fn fill(
 ) {
     let start = list.len();
     list.resize(start + count, stage.template());
-    if !stage.batched {
-        for (v, i) in list[start..].iter_mut().zip(numbers) {
-            stage.write(i, v);
-        }
-        return;
-    }
     let mut numbers = numbers;
     let light_all = stage.deferred.is_none();
     for chunk in list[start..].chunks_mut(LANES) {

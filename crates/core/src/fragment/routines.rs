@@ -8,8 +8,6 @@
 // Lane loops index several arrays in step; that is the shape the vectorizer wants.
 #![allow(clippy::needless_range_loop)]
 
-use multiversion::multiversion;
-
 use super::*;
 use crate::lanes::{Lane, INDEX_F32, INDEX_F64, LANES};
 use crate::texenv::{Combine, CombineFunc, EnvMode, FogMode, Operand, Source, TexEnv};
@@ -590,7 +588,10 @@ fn store(k: &FragmentKey, color: &mut Lane<u32>, pass: &Lane<u32>, words: &Lane<
 const SHORT: usize = 6;
 
 /// The span routine for keys without alpha test, stencil or logic op.
-#[multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
+#[cfg_attr(
+    not(fuzzing),
+    multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
+)]
 pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,
@@ -1387,7 +1388,10 @@ fn texels_by_pixel(
 /// logic op: every unit in order, then fog. The depth test runs before texturing,
 /// which gives the same result (ES 1.1 §3.7: nothing between them can discard a fragment
 /// here) and skips the sampling of hidden fragments.
-#[multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
+#[cfg_attr(
+    not(fuzzing),
+    multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
+)]
 pub(super) fn textured<const F: u8, const DEPTH: bool, const BLEND: bool>(
     k: &FragmentKey,
     t: &Shading,

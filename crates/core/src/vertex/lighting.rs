@@ -193,7 +193,7 @@ impl Prepared {
                 Some((vp, h)) if pl.spot.is_none() => {
                     self.add_light(pl, f, n, color, &vp, &h, None, &mut c)
                 }
-                _ => self.add_light_seen_from(pl, f, eye, n, color, &mut c),
+                _ => add_light_seen_from(self, pl, f, eye, n, color, &mut c),
             }
         }
         c[3] = if self.color_material {
@@ -278,26 +278,6 @@ impl Prepared {
                 c[ch][j] += min_ps(max_ps(lit, -f32::MAX), f32::MAX);
             }
         }
-    }
-
-    /// [`add_light`](Self::add_light) for a positional or spot light, whose vectors and
-    /// att·spot differ per lane. Kept out of line: inlined, its code made the whole batched
-    /// vertex loop (`vertex::fill`) worse even for draws that never call it (lit-offscreen,
-    /// directional lights only, 4 frames: 381.0 M instructions inlined, 370.0 M out of line;
-    /// lit-point, which calls it, 1 688.8 M against 1 718.7 M). Out of line it is compiled
-    /// for the baseline instruction set, which rounds exactly alike.
-    #[inline(never)]
-    fn add_light_seen_from(
-        &self,
-        pl: &Prepared1,
-        f: usize,
-        eye: &[Lane<f32>; 4],
-        n: &[Lane<f32>; 3],
-        color: &[Lane<f32>; 4],
-        c: &mut [Lane<f32>; 4],
-    ) {
-        let (vp, h, k) = light_lanes(pl, eye);
-        self.add_light(pl, f, n, color, &vp, &h, Some(&k), c);
     }
 
     /// The lit color of a vertex at eye position `eye` with eye-space normal `n` (already
@@ -412,6 +392,30 @@ fn normalize_or_zero3(v: [f32; 3]) -> [f32; 3] {
     } else {
         [0.0; 3]
     }
+}
+
+/// [`Prepared::add_light`] for a positional or spot light, whose vectors and
+/// att·spot differ per lane. Kept out of line: inlined, its code made the whole batched
+/// vertex loop (`vertex::fill`) worse even for draws that never call it (lit-offscreen,
+/// directional lights only, 4 frames: 381.0 M instructions inlined, 370.0 M out of line;
+/// lit-point, which calls it, 1 688.8 M against 1 718.7 M). Out of line it is not in
+/// `fill`'s AVX2 and SSE4.1 clones, so it has its own (with SSE2's two f64 lanes, the
+/// powers took lit-point from 1 718.7 M to 1 773.0 M); every clone rounds exactly alike.
+#[cfg_attr(
+    not(fuzzing),
+    multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
+)]
+fn add_light_seen_from(
+    lighting: &Prepared,
+    pl: &Prepared1,
+    f: usize,
+    eye: &[Lane<f32>; 4],
+    n: &[Lane<f32>; 3],
+    color: &[Lane<f32>; 4],
+    c: &mut [Lane<f32>; 4],
+) {
+    let (vp, h, k) = light_lanes(pl, eye);
+    lighting.add_light(pl, f, n, color, &vp, &h, Some(&k), c);
 }
 
 /// Light `pl` seen from each lane's eye position, as [`Prepared::shade`] works it out: the

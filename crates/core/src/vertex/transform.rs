@@ -1,4 +1,4 @@
-//! One vertex through the vertex stage: skinning or the modelview, the projection, the
+//! Vertices through the vertex stage, eight at a time: skinning or the modelview, the projection, the
 //! normal transform (inverse transpose, rescale, normalize), lighting, texture coordinates
 //! (generated or fetched, then the texture matrix), the derived point size and the user
 //! clip distances. [`Stage::new`] derives everything that is constant over a draw call.
@@ -61,10 +61,9 @@ pub(super) struct Stage<'s, 'd> {
     normal: Mat3,
     rescale: f32,
     lighting: Option<Prepared>,
-    /// The eye-space normal is needed (lighting or texgen).
-    need_normal: bool,
-    /// The eye-space position is needed (lighting, fog, user clip planes, texgen, point
-    /// attenuation); otherwise the clip position comes from one product and `eye` is 0.
+    /// The eye-space position is needed (positional or spot lights, fog, user clip
+    /// planes, reflection-map texgen, point attenuation, skinning); otherwise the clip
+    /// position comes from one product and `eye` is 0.
     need_eye: bool,
     /// Per palette matrix: it and its normal matrix.
     palette: Option<Vec<(Mat4, Mat3)>>,
@@ -73,8 +72,6 @@ pub(super) struct Stage<'s, 'd> {
     attenuate: bool,
     planes: usize,
     two_side: bool,
-    /// [`write_lanes`](Self::write_lanes) applies: no skinning.
-    pub batched: bool,
     /// Some unit's coordinates are generated from the normal (texgen).
     texgen: bool,
     /// The texture coordinates of units whose are constant over the draw (the others
@@ -82,14 +79,8 @@ pub(super) struct Stage<'s, 'd> {
     template_tex: [Vec4; TEXTURE_UNITS],
     /// Some unit's coordinates are not constant.
     tex_varies: bool,
-    /// Flat-shaded lit primitives where every vertex provokes at most one of them
-    /// (non-indexed triangles and lines), as (first vertex, vertices per primitive): only
-    /// vertex first + k·step + step − 1 is lit. Flat shading reads no other vertex's color
-    /// (clipping and setup take the color of the original provoking vertex), so the
-    /// pixels are the same as with every vertex lit.
-    pub provoking: Option<(usize, usize)>,
-    /// The batched path lights after transforming, only the vertices whose colors are
-    /// read (see [`Deferred`]).
+    /// Lighting after transforming, only of the vertices whose colors are read (see
+    /// [`Deferred`]).
     pub deferred: Option<Deferred>,
 }
 
@@ -97,7 +88,8 @@ pub(super) struct Stage<'s, 'd> {
 /// lit lines, where vertex `first + k` belongs to primitive `k / step` alone: only the
 /// vertices of triangles that clipping does not drop outright
 /// ([`rejects`](crate::vertex::rejects)), and of those only the provoking one under
-/// flat shading, are lit. No other vertex's color reaches a pixel.
+/// flat shading, are lit. No other vertex's color reaches a pixel: flat shading reads
+/// only the provoking vertex's color (clipping and setup keep the original one).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Deferred {
     pub first: usize,
@@ -116,7 +108,6 @@ impl<'s, 'd> Stage<'s, 'd> {
             .as_ref()
             .is_some_and(|l| l.two_side && !matches!(draw.primitive, Primitive::Points))
             && !draw.primitive.is_line();
-        let batched = state.matrix_palette.is_none();
         let tex: [TexSource<'d>; TEXTURE_UNITS] = std::array::from_fn(|u| {
             let m = state.texture_matrices[u];
             let matrix = (m != Mat4::IDENTITY).then_some(m);
@@ -135,14 +126,8 @@ impl<'s, 'd> Stage<'s, 'd> {
         });
         let tex_varies = tex.iter().any(|t| !matches!(t, TexSource::Constant(_)));
         let flat = state.shade_model == ShadeModel::Flat;
-        let provoking = match (draw.primitive, draw.indices) {
-            _ if !flat || lighting.is_none() => None,
-            (Primitive::Triangles, Indices::Range { first, .. }) => Some((first, 3)),
-            (Primitive::Lines, Indices::Range { first, .. }) => Some((first, 2)),
-            _ => None,
-        };
         let deferred = match (draw.primitive, draw.indices) {
-            _ if !batched || lighting.is_none() => None,
+            _ if lighting.is_none() => None,
             (Primitive::Triangles, Indices::Range { first, .. }) => Some(Deferred {
                 first,
                 step: 3,
@@ -167,11 +152,11 @@ impl<'s, 'd> Stage<'s, 'd> {
             } else {
                 1.0
             },
-            need_normal: lighting.is_some() || state.texgen.iter().any(Option::is_some),
-            need_eye: lighting.is_some()
+            need_eye: lighting.as_ref().is_some_and(Prepared::reads_position)
                 || state.fog.is_some()
                 || !state.clip_planes.is_empty()
-                || state.texgen.iter().any(Option::is_some)
+                || state.texgen.contains(&Some(TexGen::ReflectionMap))
+                || state.matrix_palette.is_some()
                 || (draw.primitive == Primitive::Points
                     && state.point_params.attenuation != [1.0, 0.0, 0.0]),
             lighting,
@@ -186,19 +171,18 @@ impl<'s, 'd> Stage<'s, 'd> {
             attenuate: state.point_params.attenuation != [1.0, 0.0, 0.0],
             planes: state.clip_planes.len().min(MAX_USER_PLANES),
             two_side,
-            batched,
             texgen: state.texgen.iter().any(Option::is_some),
-            provoking,
             deferred,
         }
     }
 
     /// Eye-space position and (untransformed-length) eye-space normal of vertex `i`.
-    #[inline(always)]
+    #[cfg(test)]
     fn to_eye(&self, i: usize, p: Vec4) -> (Vec4, Vec3) {
         let n = || self.draw.normal.fetch_vec4(i).truncate();
+        let need_normal = self.need_normal();
         let Some(palette) = &self.palette else {
-            let ne = if self.need_normal {
+            let ne = if need_normal {
                 self.normal * n() * self.rescale
             } else {
                 Vec3::ZERO
@@ -211,12 +195,12 @@ impl<'s, 'd> Stage<'s, 'd> {
             return (eye, ne);
         };
         let (mut eye, mut ne) = (Vec4::ZERO, Vec3::ZERO);
-        let obj_n = if self.need_normal { n() } else { Vec3::ZERO };
+        let obj_n = if need_normal { n() } else { Vec3::ZERO };
         for (index, weight) in palette_terms(self.draw, i) {
             // An index past the palette contributes nothing.
             if let Some((m, nm)) = palette.get(index) {
                 eye += (*m * p) * weight;
-                if self.need_normal {
+                if need_normal {
                     ne += (*nm * obj_n) * weight;
                 }
             }
@@ -224,11 +208,18 @@ impl<'s, 'd> Stage<'s, 'd> {
         (eye, ne)
     }
 
-    /// Runs vertex `i` into `out`, every field written (inlined into `fill`, which is
-    /// compiled per instruction set).
-    #[inline(always)]
-    pub fn write(&self, i: usize, out: &mut ClipVertex) {
-        let p = self.draw.position.fetch_vec4(i);
+    /// The eye-space normal is needed: lighting or texgen reads it.
+    #[cfg(test)]
+    fn need_normal(&self) -> bool {
+        self.lighting.is_some() || self.texgen
+    }
+
+    /// Runs vertex `i` into `out`, every field written, every vertex lit: the vertex stage
+    /// stated one vertex at a time, which [`write_lanes`](Self::write_lanes) must match
+    /// bit for bit (the tests compare them).
+    #[cfg(test)]
+    fn write(&self, i: usize, out: &mut ClipVertex) {
+        let p = Vec4::from_array(self.draw.position.fetch(i));
         // The clip position does not depend on lighting or texgen being on (GL's
         // invariance rule for multi-pass rendering): always the one product with the
         // combined matrix, except when skinning.
@@ -238,14 +229,14 @@ impl<'s, 'd> Stage<'s, 'd> {
         } else {
             self.mvp * p
         };
-        if self.need_normal && self.state.normalize {
+        if self.need_normal() && self.state.normalize {
             // A zero-length normal stays zero: it lights nothing but ambient and emission,
             // and never produces NaN.
             normal = normal.normalize_or_zero();
         }
         let given = self.draw.color.fetch_vec4(i);
         let (color, back_color) = match &self.lighting {
-            Some(l) if self.lit(i) => {
+            Some(l) => {
                 let front = l.shade(eye, normal, given, false);
                 let back = if self.two_side {
                     l.shade(eye, -normal, given, true)
@@ -283,7 +274,7 @@ impl<'s, 'd> Stage<'s, 'd> {
                     *t = tc;
                     continue;
                 }
-                TexSource::Array(a, matrix) => (a.fetch_vec4(i), matrix),
+                TexSource::Array(a, matrix) => (Vec4::from_array(a.fetch(i)), matrix),
                 TexSource::Gen(TexGen::NormalMap, matrix) => (normal.extend(1.0), matrix),
                 TexSource::Gen(TexGen::ReflectionMap, matrix) => {
                     let e = eye.truncate().normalize_or_zero();
@@ -334,17 +325,23 @@ impl<'s, 'd> Stage<'s, 'd> {
     /// Runs the vertices `idx` (`LANES` of them) into `out` (at most as many: lanes past
     /// its end are computed and dropped), as [`write`](Self::write) would one by one and
     /// bit for bit alike, with positions, normals and colors as structures of arrays so
-    /// transform, normalization and lighting vectorize across vertices. Only when
-    /// `batched`.
+    /// transform, normalization and lighting vectorize across vertices.
     #[inline(always)]
     pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [ClipVertex], light: bool) {
         let mut p = [[0.0; LANES]; 4];
         self.draw.position.gather(idx, &mut p);
-        let pos = mat4_lanes(&self.mvp, &p);
         let eye = if self.need_eye {
-            mat4_lanes(&self.modelview, &p)
+            self.eye_lanes(idx, &p)
         } else {
             [[0.0; LANES]; 4]
+        };
+        // The clip position does not depend on lighting or texgen being on (GL's
+        // invariance rule for multi-pass rendering): always the one product with the
+        // combined matrix, except when skinning.
+        let pos = if self.palette.is_some() {
+            mat4_lanes(&self.projection, &eye)
+        } else {
+            mat4_lanes(&self.mvp, &p)
         };
         // Texgen reads the normals; lighting shares them then.
         let normal = self.texgen.then(|| self.normals_lanes(idx));
@@ -397,18 +394,33 @@ impl<'s, 'd> Stage<'s, 'd> {
         }
     }
 
+    /// The eye positions of vertices `idx` at object positions `p`: the modelview's
+    /// product, or the blend of their palette matrices.
+    #[inline(always)]
+    fn eye_lanes(&self, idx: &[usize; LANES], p: &[Lane<f32>; 4]) -> [Lane<f32>; 4] {
+        match &self.palette {
+            None => mat4_lanes(&self.modelview, p),
+            Some(palette) => self.skin_lanes(palette, idx, p, |(m, _)| m.to_cols_array_2d()),
+        }
+    }
+
     /// The eye-space normals of vertices `idx`, as `to_eye` and `write` derive them: the
-    /// normal matrix, the rescale factor, and with `GL_NORMALIZE` unit length (or zero).
+    /// normal matrix and the rescale factor (or the blend of the palette's normal
+    /// matrices), and with `GL_NORMALIZE` unit length (or zero).
     #[inline(always)]
     fn normals_lanes(&self, idx: &[usize; LANES]) -> [Lane<f32>; 3] {
         let mut n = [[0.0; LANES]; 3];
         self.draw.normal.gather(idx, &mut n);
         let mut normal = [[0.0; LANES]; 3];
-        let m = self.normal.to_cols_array_2d();
-        for r in 0..3 {
-            for k in 0..LANES {
-                normal[r][k] =
-                    (m[0][r] * n[0][k] + m[1][r] * n[1][k] + m[2][r] * n[2][k]) * self.rescale;
+        if let Some(palette) = &self.palette {
+            normal = self.skin_lanes(palette, idx, &n, |(_, nm)| nm.to_cols_array_2d());
+        } else {
+            let m = self.normal.to_cols_array_2d();
+            for r in 0..3 {
+                for k in 0..LANES {
+                    normal[r][k] =
+                        (m[0][r] * n[0][k] + m[1][r] * n[1][k] + m[2][r] * n[2][k]) * self.rescale;
+                }
             }
         }
         if self.state.normalize {
@@ -447,7 +459,7 @@ impl<'s, 'd> Stage<'s, 'd> {
             None if l.reads_position() => {
                 let mut p = [[0.0; LANES]; 4];
                 self.draw.position.gather(idx, &mut p);
-                computed = mat4_lanes(&self.modelview, &p);
+                computed = self.eye_lanes(idx, &p);
                 &computed
             }
             // Directional lights only: no position is read.
@@ -465,14 +477,58 @@ impl<'s, 'd> Stage<'s, 'd> {
         (front, back)
     }
 
-    /// Whether vertex `i` is lit: always, except under [`provoking`](Self::provoking)
-    /// where only the provoking vertices are (the others' colors are never read).
+    /// Skinning (`OES_matrix_palette`) in lanes, as `to_eye` blends one vertex: the sum
+    /// over each vertex's palette terms of weight · (matrix · `v`), each lane with its
+    /// own matrices (`cols` takes a palette entry's `N` × `N` columns). A term whose index
+    /// is past the palette adds nothing, not even a zero (which would turn −0 into +0).
     #[inline(always)]
-    pub fn lit(&self, i: usize) -> bool {
-        match self.provoking {
-            None => true,
-            Some((first, step)) => i >= first && (i - first) % step == step - 1,
+    fn skin_lanes<const N: usize>(
+        &self,
+        palette: &[(Mat4, Mat3)],
+        idx: &[usize; LANES],
+        v: &[Lane<f32>; N],
+        cols: impl Fn(&(Mat4, Mat3)) -> [[f32; N]; N],
+    ) -> [Lane<f32>; N] {
+        let mut terms = [[(usize::MAX, 0.0); LANES]; 4];
+        let mut units = 0;
+        for (k, &i) in idx.iter().enumerate() {
+            for (t, term) in palette_terms(self.draw, i).enumerate() {
+                terms[t][k] = term;
+                units = units.max(t + 1);
+            }
         }
+        let mut sum = [[0.0; LANES]; N];
+        for lanes in &terms[..units] {
+            // Each lane's matrix, column by column, and whether it exists.
+            let mut m = [[[0.0; LANES]; N]; N];
+            let mut valid = [false; LANES];
+            for (k, &(index, _)) in lanes.iter().enumerate() {
+                if let Some(entry) = palette.get(index) {
+                    valid[k] = true;
+                    for (c, col) in cols(entry).iter().enumerate() {
+                        for (r, &x) in col.iter().enumerate() {
+                            m[c][r][k] = x;
+                        }
+                    }
+                }
+            }
+            for r in 0..N {
+                for k in 0..LANES {
+                    // glam's order: ((x·c₀ + y·c₁) + z·c₂) + w·c₃.
+                    let mut x = m[0][r][k] * v[0][k];
+                    for c in 1..N {
+                        x += m[c][r][k] * v[c][k];
+                    }
+                    let term = x * lanes[k].1;
+                    sum[r][k] = if valid[k] {
+                        sum[r][k] + term
+                    } else {
+                        sum[r][k]
+                    };
+                }
+            }
+        }
+        sum
     }
 
     /// The vertex `fill` initializes the list with: the values that are the same for every
@@ -602,7 +658,7 @@ fn texgen_lanes(g: TexGen, n: &[Lane<f32>; 3], eye: &[Lane<f32>; 4]) -> [Lane<f3
     }
 }
 
-#[inline]
+#[cfg(test)]
 fn clamp01(c: Vec4) -> Vec4 {
     // max/min rather than clamp: NaN becomes 0 instead of propagating.
     c.max(Vec4::ZERO).min(Vec4::ONE)
@@ -633,7 +689,7 @@ mod tests {
 
     /// [`bits`] of vertex `i` of a draw of `n` vertices from `first` under `stage`, the
     /// colors left out where deferred lighting leaves them unlit because no pixel reads
-    /// them (the batched path defers; the one-vertex path lights them).
+    /// them (the lanes defer; the one-vertex statement lights every vertex).
     fn read_bits(
         stage: &Stage<'_, '_>,
         v: &ClipVertex,
@@ -646,7 +702,8 @@ mod tests {
             let k = i - d.first;
             let whole = k < n / d.step * d.step;
             let rejected = d.step == 3 && rejects(tri[0], tri[1], tri[2]);
-            if !whole || rejected {
+            let provoking = k % d.step == d.step - 1;
+            if !whole || rejected || (d.provoking_only && !provoking) {
                 v.color = Vec4::ZERO;
                 v.back_color = Vec4::ZERO;
             }
@@ -724,7 +781,23 @@ mod tests {
             position: dir.extend(0.0),
             ..Light::default()
         };
-        for case in 0..512u32 {
+        // Skinning: three palette matrices (one singular, so its normal matrix is the
+        // identity), three terms per vertex with indices past the palette (5), fractional
+        // (1.5 reads as 1), negative and NaN among them, and odd weights.
+        let palette = vec![
+            Mat4::from_rotation_y(0.6) * Mat4::from_translation(Vec3::new(1.0, 0.0, -2.0)),
+            Mat4::from_scale(Vec3::new(2.0, 0.5, 0.0)),
+            Mat4::from_cols_array(&[
+                0.9, 0.1, 0.0, 0.0, -0.2, 1.1, 0.3, 0.0, 0.0, 0.0, 1.0, 0.2, 0.5, -0.5, 0.0, 1.0,
+            ]),
+        ];
+        let skin_index = bytes(
+            &(0..3 * n)
+                .map(|k| [0.0, 1.0, 2.0, 5.0, 1.5, -1.0, f32::NAN][k % 7])
+                .collect::<Vec<_>>(),
+        );
+        let skin_weight = bytes(&(0..3 * n).map(|k| at(k, 2) * 0.25).collect::<Vec<_>>());
+        for case in 0..1024u32 {
             let mut s = RenderState::new(8, 8);
             s.modelview = Mat4::from_scale(Vec3::new(1.5, 0.5, 2.0))
                 * Mat4::from_rotation_x(0.4)
@@ -788,6 +861,11 @@ mod tests {
             if case & 128 != 0 {
                 d.position = array(&p4b, 4);
             }
+            if case & 512 != 0 {
+                s.matrix_palette = Some(palette.clone());
+                d.matrix_index = Some(array(&skin_index, 3));
+                d.weight = Some(array(&skin_weight, 3));
+            }
             d.normal = AttribSource::Array(array(&nb, 3));
             d.color = AttribSource::Array(array(&cb, 4));
             if case & 2 != 0 {
@@ -812,7 +890,6 @@ mod tests {
                 }
             }
             let stage = Stage::new(&s, &d);
-            assert!(stage.batched);
             let v = run(&s, &d).unwrap();
             for i in 0..n {
                 let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
@@ -916,7 +993,8 @@ mod tests {
             for case in 0..16u32 {
                 let mut s = RenderState::new(8, 8);
                 if case & 8 != 0 {
-                    // Only the provoking vertices lit, in both paths alike.
+                    // Only the provoking vertices lit (the comparison leaves the others
+                    // out).
                     s.shade_model = crate::state::ShadeModel::Flat;
                 }
                 s.modelview =
@@ -952,7 +1030,6 @@ mod tests {
                 d.texcoord[0] = AttribSource::Array(arrays[3]);
                 d.texcoord[1] = AttribSource::Array(arrays[0]);
                 let stage = Stage::new(&s, &d);
-                assert!(stage.batched);
                 let v = run(&s, &d).unwrap();
                 for i in 0..n {
                     let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
@@ -1003,8 +1080,8 @@ mod tests {
         let n = pos.len() / 3;
         let all: Vec<u16> = (0..n as u16).collect();
         use ShadeModel::{Flat, Smooth};
-        // The matrix palette keeps a draw on the one-vertex path, where `provoking` does
-        // what `deferred` does on the batched one. Positional lights come with texgen.
+        // Skinned draws (a one-matrix palette) defer alike. Positional lights come with
+        // texgen.
         for (shade, light_w, two_side, prim, palette) in [
             (Flat, 0.0, false, Primitive::Triangles, false),
             (Flat, 0.0, true, Primitive::Triangles, false),
@@ -1067,9 +1144,12 @@ mod tests {
             let range = with_normals(Indices::Range { first: 0, count: n });
             let step = if prim == Primitive::Lines { 2 } else { 3 };
             let stage = Stage::new(&s, &range);
-            assert_eq!(stage.provoking, (shade == Flat).then_some((0, step)));
-            assert_eq!(stage.batched, !palette);
-            assert_eq!(stage.deferred.is_some(), !palette, "{prim:?}");
+            let deferred = Deferred {
+                first: 0,
+                step,
+                provoking_only: shade == Flat,
+            };
+            assert_eq!(stage.deferred, Some(deferred), "{prim:?}");
             // Indexed, every vertex is lit: the reference.
             let lit_all = image(Indices::U16(&all));
             let provoking_only = image(Indices::Range { first: 0, count: n });
