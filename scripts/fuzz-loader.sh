@@ -7,9 +7,10 @@
 # nightly toolchain and cargo-fuzz; installs them through rustup and cargo when they are
 # missing. cargo-fuzz compiles everything as one codegen unit, so the build runs on one
 # core; with AddressSanitizer it took 44.5 of CI's 73 minutes. The build is therefore
-# without it (`-s none`: the Loader and the rasterizer have no unsafe code for it to check;
-# panics, overflow checks, timeouts and the memory limit find the bugs here) and without
-# the rasterizer's instruction-set clones (`cfg(fuzzing)`, see crates/core/Cargo.toml).
+# without it (`-s none`: the Loader and the rasterizer have no unsafe code for it to
+# check; panics, overflow checks, timeouts and the memory limit find the bugs here) and
+# without the rasterizer's instruction-set clones (`cfg(fuzzing)`, see
+# crates/core/Cargo.toml): 9.7 minutes.
 set -eu
 cd "$(dirname "$0")/.."
 seconds=${1:-60}

@@ -74,7 +74,7 @@ impl AttribArray<'_> {
         (self.monomorphized(Gather::<N>))(self, idx, out)
     }
 
-    /// The array's format as a [`format`] constant.
+    /// The array's format as a [`format`](mod@format) constant.
     #[inline]
     fn format(&self) -> u8 {
         use format::*;

@@ -1,7 +1,7 @@
-//! Vertices through the vertex stage, eight at a time: skinning or the modelview, the projection, the
-//! normal transform (inverse transpose, rescale, normalize), lighting, texture coordinates
-//! (generated or fetched, then the texture matrix), the derived point size and the user
-//! clip distances. [`Stage::new`] derives everything that is constant over a draw call.
+//! Vertices through the vertex stage, eight at a time: skinning or the modelview, the
+//! projection, the normal transform (inverse transpose, rescale, normalize), lighting,
+//! texture coordinates (generated or fetched, then the texture matrix), the derived point
+//! size and the user clip distances. [`Stage::new`] derives everything that is constant over a draw call.
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
@@ -323,9 +323,10 @@ impl<'s, 'd> Stage<'s, 'd> {
     }
 
     /// Runs the vertices `idx` (`LANES` of them) into `out` (at most as many: lanes past
-    /// its end are computed and dropped), as [`write`](Self::write) would one by one and
-    /// bit for bit alike, with positions, normals and colors as structures of arrays so
-    /// transform, normalization and lighting vectorize across vertices.
+    /// its end are computed and dropped), as `write` (the tests' one-vertex statement)
+    /// would one by one and bit for bit alike, with positions, normals and colors as
+    /// structures of arrays so transform, normalization and lighting vectorize across
+    /// vertices.
     #[inline(always)]
     pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [ClipVertex], light: bool) {
         let mut p = [[0.0; LANES]; 4];
@@ -411,18 +412,20 @@ impl<'s, 'd> Stage<'s, 'd> {
     fn normals_lanes(&self, idx: &[usize; LANES]) -> [Lane<f32>; 3] {
         let mut n = [[0.0; LANES]; 3];
         self.draw.normal.gather(idx, &mut n);
-        let mut normal = [[0.0; LANES]; 3];
-        if let Some(palette) = &self.palette {
-            normal = self.skin_lanes(palette, idx, &n, |(_, nm)| nm.to_cols_array_2d());
-        } else {
-            let m = self.normal.to_cols_array_2d();
-            for r in 0..3 {
-                for k in 0..LANES {
-                    normal[r][k] =
-                        (m[0][r] * n[0][k] + m[1][r] * n[1][k] + m[2][r] * n[2][k]) * self.rescale;
+        let mut normal = match &self.palette {
+            Some(palette) => self.skin_lanes(palette, idx, &n, |(_, nm)| nm.to_cols_array_2d()),
+            None => {
+                let m = self.normal.to_cols_array_2d();
+                let mut out = [[0.0; LANES]; 3];
+                for r in 0..3 {
+                    for k in 0..LANES {
+                        out[r][k] = (m[0][r] * n[0][k] + m[1][r] * n[1][k] + m[2][r] * n[2][k])
+                            * self.rescale;
+                    }
                 }
+                out
             }
-        }
+        };
         if self.state.normalize {
             normalize_lanes(&mut normal);
         }
@@ -430,7 +433,8 @@ impl<'s, 'd> Stage<'s, 'd> {
     }
 
     /// The front and back colors of vertices `idx` for [`write_lanes`](Self::write_lanes):
-    /// lit when lighting is on and `light` (see [`lit`](Self::lit)), otherwise the given
+    /// lit when lighting is on and `light` (false for vertices whose lighting is
+    /// [`Deferred`]), otherwise the given
     /// colors clamped. `eye` and `normal` hold their eye positions and normals when the
     /// caller has them; they are worked out here when lighting needs them and it does not.
     #[inline(always)]
@@ -489,21 +493,25 @@ impl<'s, 'd> Stage<'s, 'd> {
         v: &[Lane<f32>; N],
         cols: impl Fn(&(Mat4, Mat3)) -> [[f32; N]; N],
     ) -> [Lane<f32>; N] {
-        let mut terms = [[(usize::MAX, 0.0); LANES]; 4];
-        let mut units = 0;
-        for (k, &i) in idx.iter().enumerate() {
-            for (t, term) in palette_terms(self.draw, i).enumerate() {
-                terms[t][k] = term;
-                units = units.max(t + 1);
+        // The index and weight elements of the 8 vertices, one format dispatch per array.
+        let rows = |a: Option<AttribArray<'_>>| {
+            let mut r = [[0.0; LANES]; 4];
+            if let Some(a) = a {
+                a.gather(idx, &mut r);
             }
-        }
+            r
+        };
+        let (index, weight) = (rows(self.draw.matrix_index), rows(self.draw.weight));
         let mut sum = [[0.0; LANES]; N];
-        for lanes in &terms[..units] {
-            // Each lane's matrix, column by column, and whether it exists.
+        for t in 0..palette_units(self.draw) {
+            // Each lane's matrix, column by column, whether it exists, and its weight.
             let mut m = [[[0.0; LANES]; N]; N];
             let mut valid = [false; LANES];
-            for (k, &(index, _)) in lanes.iter().enumerate() {
-                if let Some(entry) = palette.get(index) {
+            let mut w = [0.0; LANES];
+            for k in 0..LANES {
+                let (entry, wk) = palette_term(self.draw, t, index[t][k], weight[t][k]);
+                w[k] = wk;
+                if let Some(entry) = palette.get(entry) {
                     valid[k] = true;
                     for (c, col) in cols(entry).iter().enumerate() {
                         for (r, &x) in col.iter().enumerate() {
@@ -519,7 +527,7 @@ impl<'s, 'd> Stage<'s, 'd> {
                     for c in 1..N {
                         x += m[c][r][k] * v[c][k];
                     }
-                    let term = x * lanes[k].1;
+                    let term = x * w[k];
                     sum[r][k] = if valid[k] {
                         sum[r][k] + term
                     } else {
@@ -569,27 +577,35 @@ impl<'s, 'd> Stage<'s, 'd> {
     }
 }
 
-/// The (palette index, weight) pairs of vertex `i` (see [`DrawCall::matrix_index`]).
-fn palette_terms(draw: &DrawCall<'_>, i: usize) -> impl Iterator<Item = (usize, f32)> {
-    let units = draw.weight.map_or(1, |w| w.size.clamp(1, 4));
-    let fetch = |a: &Option<AttribArray<'_>>| a.map(|a| (a.fetch(i), a.size));
-    let (idx, weights) = (fetch(&draw.matrix_index), fetch(&draw.weight));
-    (0..units).map(move |k| {
-        let index = match idx {
-            Some((v, size)) if k < size => v[k],
-            _ => 0.0,
-        };
-        let weight = match weights {
-            Some((v, _)) => v[k],
-            None => 1.0,
-        };
-        let index = if index >= 0.0 && index.is_finite() {
-            index as usize
-        } else {
-            usize::MAX
-        };
-        (index, weight)
-    })
+/// The palette terms of every vertex of `draw` (see [`DrawCall::matrix_index`]).
+fn palette_units(draw: &DrawCall<'_>) -> usize {
+    draw.weight.map_or(1, |w| w.size.clamp(1, 4))
+}
+
+/// Palette term `t` of a vertex whose matrix-index and weight elements have component `t`
+/// `index` and `weight` (read only where the arrays exist): the palette entry
+/// (`usize::MAX` for none) and its weight.
+#[inline(always)]
+fn palette_term(draw: &DrawCall<'_>, t: usize, index: f32, weight: f32) -> (usize, f32) {
+    let index = match draw.matrix_index {
+        Some(a) if t < a.size => index,
+        _ => 0.0,
+    };
+    let weight = if draw.weight.is_some() { weight } else { 1.0 };
+    let index = if index >= 0.0 && index.is_finite() {
+        index as usize
+    } else {
+        usize::MAX
+    };
+    (index, weight)
+}
+
+/// The (palette entry, weight) pairs of vertex `i`.
+#[cfg(test)]
+fn palette_terms<'a>(draw: &'a DrawCall<'_>, i: usize) -> impl Iterator<Item = (usize, f32)> + 'a {
+    let fetch = |a: Option<AttribArray<'_>>| a.map_or([0.0; 4], |a| a.fetch(i));
+    let (index, weight) = (fetch(draw.matrix_index), fetch(draw.weight));
+    (0..palette_units(draw)).map(move |t| palette_term(draw, t, index[t], weight[t]))
 }
 
 #[inline(always)]
