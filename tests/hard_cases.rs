@@ -150,7 +150,7 @@ fn assert_vertices_finite(
 ) -> Vec<gles_cm_core::vertex::ClipVertex> {
     let v = gles_cm_core::vertex::run(s, d).unwrap();
     let (lo, hi) = d.indices.range().unwrap();
-    let out: Vec<_> = (lo..=hi).map(|i| v[i]).collect();
+    let out: Vec<_> = (lo..=hi).map(|i| v.get(i).unpack()).collect();
     for v in &out {
         assert!(v.color.is_finite() && v.back_color.is_finite(), "{v:?}");
         assert!(v.tex.iter().all(|t| t.is_finite()), "{v:?}");
@@ -453,7 +453,7 @@ fn case_01_w_negative_vertices_are_clipped_before_the_divide() {
 
 #[test]
 fn case_02_near_plane_crossing_screen_covering_triangle() {
-    use gles_cm_core::vertex::ClipVertex;
+    use gles_cm_core::vertex::{ClipVertex, Layout};
     let v = |x: f32, y: f32, z: f32, w: f32| ClipVertex::new(Vec4::new(x, y, z, w), Vec4::ONE);
     // Crosses the near plane (z = −w) and leaves the band on two sides.
     let (a, b, c) = (
@@ -462,14 +462,17 @@ fn case_02_near_plane_crossing_screen_covering_triangle() {
         v(0.0, 40.0, 0.5, 1.0),
     );
     let mut n = 0;
-    clip::triangle(&a, &b, &c, 0, |p| {
+    let full = Layout::full(0);
+    let [fa, fb, fc] = [a, b, c].map(|v| full.pack(&v));
+    clip::triangle(full.view(&fa), full.view(&fb), full.view(&fc), |p| {
         n = p.len();
         for q in p {
-            let w = q.pos.w;
+            let q = q.pos();
+            let w = q.w;
             assert!(w >= clip::W_MIN);
-            assert!(q.pos.z >= -w * 1.0001 && q.pos.z <= w * 1.0001, "{q:?}");
-            assert!(q.pos.x.abs() <= clip::GUARD * w * 1.0001, "{q:?}");
-            assert!(q.pos.y.abs() <= clip::GUARD * w * 1.0001, "{q:?}");
+            assert!(q.z >= -w * 1.0001 && q.z <= w * 1.0001, "{q:?}");
+            assert!(q.x.abs() <= clip::GUARD * w * 1.0001, "{q:?}");
+            assert!(q.y.abs() <= clip::GUARD * w * 1.0001, "{q:?}");
         }
     });
     assert!((3..=9).contains(&n), "{n} vertices after frustum clipping");
@@ -479,7 +482,14 @@ fn case_02_near_plane_crossing_screen_covering_triangle() {
         q.clip_dist = std::array::from_fn(|i| ((i + k) as f32 * 1.7).sin());
     }
     let mut m = 0;
-    clip::triangle(&cut[0], &cut[1], &cut[2], 6, |p| m = p.len());
+    let six = Layout::full(6);
+    let cut = cut.map(|v| six.pack(&v));
+    clip::triangle(
+        six.view(&cut[0]),
+        six.view(&cut[1]),
+        six.view(&cut[2]),
+        |p| m = p.len(),
+    );
     assert!(m <= 9 + 6, "{m}");
     // Attribute continuity along the clip edge: a smooth triangle crossing the near plane
     // and covering the screen matches the exactly clipped reference.
@@ -2171,9 +2181,10 @@ fn case_26_skinning_precision_palette_indices_and_weights() {
     d.position.stride = 0;
     d.matrix_index = Some(array(&idx, ComponentType::UnsignedByte, 2));
     d.weight = Some(array(&w, ComponentType::Float, 2));
+    // The projection is the identity: the clip positions are the eye positions.
     let v = gles_cm_core::vertex::run(&s, &d).unwrap();
-    assert_eq!(v[0].eye, Vec3::new(0.5, 0.0, 0.0));
-    assert_eq!(v[1].eye, Vec3::new(0.3, 0.0, 0.0));
+    assert_eq!(v.get(0).pos(), Vec4::new(0.5, 0.0, 0.0, 0.5));
+    assert_eq!(v.get(1).pos(), Vec4::new(0.3, 0.0, 0.0, 0.3));
 }
 
 #[test]

@@ -4,7 +4,7 @@
 //! precision measurement (issue 10, item 4).
 
 use glam::{Mat4, Vec3, Vec4};
-use gles_cm_core::vertex::ClipVertex;
+use gles_cm_core::vertex::{ClipVertex, Layout};
 use gles_cm_core::{clip, fixed};
 use gles_cm_core::{
     AttribArray, ColorFormat, ComponentType, DepthFormat, DrawCall, Indices, Primitive,
@@ -78,8 +78,10 @@ proptest! {
         let vs: Vec<ClipVertex> = (0..3)
             .map(|i| ClipVertex::new(Vec4::new(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3] * 0.5 + 2.0), Vec4::ONE))
             .collect();
+        let layout = Layout::full(0);
+        let f: Vec<_> = vs.iter().map(|v| layout.pack(v)).collect();
         let mut out = Vec::new();
-        clip::triangle(&vs[0], &vs[1], &vs[2], 0, |p| out = p.iter().map(|v| **v).collect());
+        clip::triangle(layout.view(&f[0]), layout.view(&f[1]), layout.view(&f[2]), |p| out = p.iter().map(|v| v.unpack()).collect());
         for q in &out {
             let w = q.pos.w;
             prop_assert!(w >= clip::W_MIN && q.pos.is_finite());

@@ -210,12 +210,11 @@ fn set_up(
     emit: &mut impl FnMut(raster::Prim),
 ) -> Result<(), OutOfMemory> {
     let vertices = vertex::run(state, draw)?;
-    let user = state.clip_planes.len().min(clip::MAX_USER_PLANES);
     let prim = draw.primitive;
     if prim == Primitive::Points {
         for k in 0..draw.indices.len() {
-            let v = &vertices[draw.indices.get(k)];
-            if clip::point(v, user) {
+            let v = vertices.get(draw.indices.get(k));
+            if clip::point(v) {
                 if let Some(p) = raster::point::setup(state, v, bounds) {
                     emit(raster::Prim::Point(p));
                 }
@@ -223,20 +222,20 @@ fn set_up(
         }
     } else if prim.is_line() {
         prim.for_each_line(&draw.indices, |a, b| {
-            let (va, vb) = (&vertices[a], &vertices[b]);
-            if let Some((ca, cb)) = clip::line(va, vb, user) {
-                if let Some(l) = raster::line::setup(state, &ca, &cb, vb, bounds) {
+            let (va, vb) = (vertices.get(a), vertices.get(b));
+            clip::line(va, vb, |ca, cb| {
+                if let Some(l) = raster::line::setup(state, ca, cb, vb, bounds) {
                     emit(raster::Prim::Line(l));
                 }
-            }
+            });
         });
     } else {
         // Triangles are clipped to the guard band only: their pixels stop at the viewport.
         let vp = state.viewport;
         let bounds = bounds.intersect(Rect::new(vp.x, vp.y, vp.width, vp.height));
         prim.for_each_triangle(&draw.indices, |a, b, c| {
-            let (a, b, c) = (&vertices[a], &vertices[b], &vertices[c]);
-            clip::triangle(a, b, c, user, |poly| {
+            let (a, b, c) = (vertices.get(a), vertices.get(b), vertices.get(c));
+            clip::triangle(a, b, c, |poly| {
                 // The clipped polygon is convex: fan it out from its first vertex.
                 for i in 1..poly.len() - 1 {
                     let tri = [poly[0], poly[i], poly[i + 1]];

@@ -4,7 +4,7 @@
 use super::clip;
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
 use super::target::{DepthFormat, Rect};
-use super::vertex::ClipVertex;
+use super::vertex::VertexRef;
 use super::{SUBPIXEL_BITS, TEXTURE_UNITS};
 
 const ONE: i64 = 1 << SUBPIXEL_BITS;
@@ -185,7 +185,7 @@ pub(crate) type PlaneBuilder<'a> = &'a dyn Fn(&dyn Fn(usize) -> f64) -> Plane;
 /// `plane(f)` builds the plane through the per-vertex values `f(i)`, i indexing `v`.
 pub(crate) fn attribute_planes(
     state: &RenderState,
-    v: &[&ClipVertex],
+    v: &[VertexRef<'_>],
     inv_w: &[f64],
     plane: PlaneBuilder<'_>,
 ) -> (Option<UnitPlanes>, Plane) {
@@ -193,7 +193,7 @@ pub(crate) fn attribute_planes(
         Some(f) => {
             let per_pixel = f.per_pixel();
             plane(&|i| {
-                let z = v[i].eye.z.abs();
+                let z = v[i].eye_z().abs();
                 let value = if per_pixel { z } else { f.factor(z) };
                 value as f64 * inv_w[i]
             })
@@ -210,16 +210,17 @@ pub(crate) fn attribute_planes(
         let n = v.len();
         let (mut q, mut s, mut t) = ([0.0; 3], [0.0; 3], [0.0; 3]);
         for (i, v) in v.iter().enumerate() {
-            q[i] = v.tex[u].w as f64;
-            s[i] = v.tex[u].x as f64;
-            t[i] = v.tex[u].y as f64;
+            let tc = v.tex(u);
+            q[i] = tc.w as f64;
+            s[i] = tc.x as f64;
+            t[i] = tc.y as f64;
         }
         let os = period_offset(&s[..n], &q[..n], unit.sampler.wrap_s.period());
         let ot = period_offset(&t[..n], &q[..n], unit.sampler.wrap_t.period());
         planes[u] = TexPlanes {
             s: plane(&|i| (s[i] - os * q[i]) * inv_w[i]),
             t: plane(&|i| (t[i] - ot * q[i]) * inv_w[i]),
-            r: plane(&|i| v[i].tex[u].z as f64 * inv_w[i]),
+            r: plane(&|i| v[i].tex(u).z as f64 * inv_w[i]),
             q: plane(&|i| q[i] * inv_w[i]),
         };
     }
@@ -302,8 +303,8 @@ pub struct Triangle {
 /// primitive, built where the caller receives it rather than copied into one.
 pub fn triangle(
     state: &RenderState,
-    v: [&ClipVertex; 3],
-    provoking: &ClipVertex,
+    v: [VertexRef<'_>; 3],
+    provoking: VertexRef<'_>,
     bounds: Rect,
     depth: Option<DepthFormat>,
 ) -> Option<Triangle> {
@@ -318,7 +319,7 @@ pub fn triangle(
     let mut z = [0f64; 3];
     let mut inv_w = [0f64; 3];
     for i in 0..3 {
-        let p = v[i].pos;
+        let p = v[i].pos();
         debug_assert!(p.w >= clip::W_MIN);
         let iw = 1.0 / p.w as f64;
         // Clipping bounds |x/w| and |y/w| by the guard band; the clamp only removes rounding
@@ -399,7 +400,13 @@ pub fn triangle(
     }
     // Back-facing triangles take the back colors (two-sided lighting; equal to the front
     // colors otherwise).
-    let color = |v: &ClipVertex| if front { v.color } else { v.back_color };
+    let color = |v: VertexRef<'_>| {
+        if front {
+            v.color()
+        } else {
+            v.back_color()
+        }
+    };
     let flat = (state.shade_model == ShadeModel::Flat).then(|| color(provoking).to_array());
     let mut color_w = [Plane::default(); 4];
     if flat.is_none() {

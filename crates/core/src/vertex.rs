@@ -3,15 +3,18 @@
 //! user clip distances, and carry the per-vertex values the later stages interpolate.
 //! `transform` runs eight vertices at a time; `lighting` holds the lighting equation.
 
-use glam::{Vec3, Vec4};
+use glam::Vec4;
 
 use super::fixed;
 use super::state::RenderState;
 use super::{OutOfMemory, TEXTURE_UNITS};
 
+mod layout;
 pub mod lighting;
 pub mod power;
 mod transform;
+
+pub use layout::{lerp, ClipVertex, Floats, Layout, VertexRef, MAX_STRIDE};
 
 use super::lanes::{Lane, LANES};
 
@@ -436,78 +439,25 @@ impl<'a> DrawCall<'a> {
 /// `GL_MAX_CLIP_PLANES`: the user clip planes a vertex carries distances for.
 pub const MAX_USER_PLANES: usize = 6;
 
-/// A vertex after the vertex stage, in clip space.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ClipVertex {
-    pub pos: Vec4,
-    /// The (lit) color, clamped to [0, 1].
-    pub color: Vec4,
-    /// The color for back-facing triangles: with two-sided lighting lit with the reversed
-    /// normal and the back material, otherwise equal to `color`.
-    pub back_color: Vec4,
-    /// Texture coordinates per unit after the texture matrix (q included, not divided).
-    pub tex: [Vec4; TEXTURE_UNITS],
-    /// The eye-space position (x, y, z of the homogeneous eye coordinates), for fog
-    /// distance and point attenuation.
-    pub eye: Vec3,
-    /// The derived point size (points only; 1 elsewhere), before the rasterizer's clamp to
-    /// its supported range.
-    pub point_size: f32,
-    /// Signed distances to the enabled user clip planes, in `RenderState::clip_planes`
-    /// order (unused entries 0); negative is outside.
-    pub clip_dist: [f32; MAX_USER_PLANES],
-}
-
-impl ClipVertex {
-    /// A vertex at clip position `pos` with `color` and every other value at its default.
-    pub fn new(pos: Vec4, color: Vec4) -> ClipVertex {
-        ClipVertex {
-            pos,
-            color,
-            back_color: color,
-            tex: [Vec4::new(0.0, 0.0, 0.0, 1.0); TEXTURE_UNITS],
-            eye: Vec3::ZERO,
-            point_size: 1.0,
-            clip_dist: [0.0; MAX_USER_PLANES],
-        }
-    }
-
-    /// The vertex a fraction `t` of the way from `self` to `o`, every value interpolated
-    /// linearly in clip space, as clipping requires.
-    #[inline]
-    pub fn lerp(&self, o: &ClipVertex, t: f32) -> ClipVertex {
-        ClipVertex {
-            pos: self.pos + (o.pos - self.pos) * t,
-            color: self.color + (o.color - self.color) * t,
-            back_color: self.back_color + (o.back_color - self.back_color) * t,
-            tex: std::array::from_fn(|u| self.tex[u] + (o.tex[u] - self.tex[u]) * t),
-            eye: self.eye + (o.eye - self.eye) * t,
-            point_size: self.point_size + (o.point_size - self.point_size) * t,
-            clip_dist: std::array::from_fn(|i| {
-                self.clip_dist[i] + (o.clip_dist[i] - self.clip_dist[i]) * t
-            }),
-        }
-    }
-}
-
-/// A bit per frustum x or y plane that the vertex is strictly outside of (x < −w,
+/// A bit per frustum x or y plane that clip position `p` is strictly outside of (x < −w,
 /// y < −w, x > w, y > w; negating is exact).
 #[inline]
-fn frustum_code(v: &ClipVertex) -> u32 {
-    let p = v.pos;
+fn frustum_code(p: Vec4) -> u32 {
     Vec4::new(-p.x, -p.y, p.x, p.y)
         .cmpgt(Vec4::splat(p.w))
         .bitmask()
 }
 
-/// Whether clipping drops triangle (a, b, c) from the positions alone, before any clipping:
-/// [`clip::triangle`](super::clip::triangle) asks this first, and the deferred lighting
-/// lights no vertex of such a triangle.
+/// Whether clipping drops the triangle with clip positions (a, b, c) from the positions
+/// alone, before any clipping: [`clip::triangle`](super::clip::triangle) asks this first,
+/// and the deferred lighting lights no vertex of such a triangle.
 #[inline]
-pub fn rejects(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex) -> bool {
+pub fn rejects(a: Vec4, b: Vec4, c: Vec4) -> bool {
     // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
-    // than let NaN reach the rasterizer.
-    if !(a.pos.is_finite() && b.pos.is_finite() && c.pos.is_finite()) {
+    // than let NaN reach the rasterizer. x · 0 is 0 for finite x and NaN otherwise (glam's
+    // `is_finite` is not inlined into the instruction-set clones: a call per vertex).
+    let zero = a * 0.0 + b * 0.0 + c * 0.0;
+    if !zero.cmpeq(Vec4::ZERO).all() {
         return true;
     }
     // Outside one of the frustum's x or y planes with all three vertices, the triangle is
@@ -523,27 +473,43 @@ pub fn rejects(a: &ClipVertex, b: &ClipVertex, c: &ClipVertex) -> bool {
 /// piece uses is transformed and lit once, however often its primitives refer to it (a
 /// vertex shared by two pieces is transformed in each).
 pub struct Vertices {
-    list: Vec<ClipVertex>,
+    /// `layout.stride` floats per vertex, then padding to make the last vertex's view a
+    /// whole [`Floats`].
+    data: Vec<f32>,
+    count: usize,
+    layout: Layout,
     map: VertexMap,
 }
 
 enum VertexMap {
-    /// `list[i − base]` for every number in the index range.
+    /// Vertex `i − base` for every number in the index range.
     Dense { base: usize },
-    /// `list[k]` for `keys[k]`: the sorted distinct numbers of a sparse index list.
+    /// Vertex `k` for `keys[k]`: the sorted distinct numbers of a sparse index list.
     Sparse { keys: Vec<usize> },
 }
 
-impl std::ops::Index<usize> for Vertices {
-    type Output = ClipVertex;
+impl Vertices {
+    /// Vertex number `i` (one the draw uses).
     #[inline]
-    fn index(&self, i: usize) -> &ClipVertex {
-        match &self.map {
-            VertexMap::Dense { base } => &self.list[i - base],
-            VertexMap::Sparse { keys } => {
-                &self.list[keys.binary_search(&i).expect("vertex of this draw")]
-            }
-        }
+    pub fn get(&self, i: usize) -> VertexRef<'_> {
+        let k = match &self.map {
+            VertexMap::Dense { base } => i - base,
+            VertexMap::Sparse { keys } => keys.binary_search(&i).expect("vertex of this draw"),
+        };
+        let at = k * self.layout.stride;
+        let floats = self.data[at..at + MAX_STRIDE]
+            .try_into()
+            .expect("a view's length");
+        self.layout.view(floats)
+    }
+
+    /// How many vertices were transformed.
+    pub fn len(&self) -> usize {
+        self.count
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.count == 0
     }
 }
 
@@ -552,21 +518,34 @@ impl std::ops::Index<usize> for Vertices {
 /// structure); a sparser one only at its distinct indices. The counts come from the
 /// caller, so allocations are fallible rather than aborting.
 pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMemory> {
-    let mut list = Vec::new();
+    let stage = transform::Stage::new(state, draw);
+    let layout = stage.layout;
+    let mut data = Vec::new();
     let Some((lo, hi)) = draw.indices.range() else {
         return Ok(Vertices {
-            list,
+            data,
+            count: 0,
+            layout,
             map: VertexMap::Dense { base: 0 },
         });
     };
-    let stage = transform::Stage::new(state, draw);
+    // The vertices' floats and the padding after the last.
+    let mut reserve = |count: usize| {
+        let floats = count
+            .checked_mul(layout.stride)
+            .and_then(|f| f.checked_add(MAX_STRIDE))
+            .ok_or(OutOfMemory)?;
+        data.try_reserve_exact(floats).map_err(|_| OutOfMemory)
+    };
     let span = hi - lo + 1;
     let n = draw.indices.len();
     if matches!(draw.indices, Indices::Range { .. }) || span <= n.saturating_mul(2) {
-        list.try_reserve_exact(span).map_err(|_| OutOfMemory)?;
-        fill(&mut list, &stage, lo..=hi, span);
+        reserve(span)?;
+        fill(&mut data, &stage, lo..=hi, span);
         return Ok(Vertices {
-            list,
+            data,
+            count: span,
+            layout,
             map: VertexMap::Dense { base: lo },
         });
     }
@@ -575,55 +554,69 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     keys.extend((0..n).map(|k| draw.indices.get(k)));
     keys.sort_unstable();
     keys.dedup();
-    list.try_reserve_exact(keys.len())
-        .map_err(|_| OutOfMemory)?;
-    fill(&mut list, &stage, keys.iter().copied(), keys.len());
+    reserve(keys.len())?;
+    fill(&mut data, &stage, keys.iter().copied(), keys.len());
     Ok(Vertices {
-        list,
+        data,
+        count: keys.len(),
+        layout,
         map: VertexMap::Sparse { keys },
     })
 }
 
-/// Appends the `count` vertices `numbers` yields to `list` (which has the room). The
-/// vertices are written in place: `ClipVertex` is too large for a returned value to be
-/// copied without a `memcpy` call per vertex. Compiled also for AVX2 and SSE4.1 (the
-/// whole vertex computation is inlined here) and chosen at run time.
+/// Appends the `count` vertices `numbers` yields to `data` (which has the room), then the
+/// padding. Compiled also for AVX2 and SSE4.1 (the whole vertex computation is inlined
+/// here) and chosen at run time.
 #[cfg_attr(
     not(fuzzing),
     multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
 )]
 fn fill(
-    list: &mut Vec<ClipVertex>,
+    data: &mut Vec<f32>,
     stage: &transform::Stage<'_, '_>,
     numbers: impl Iterator<Item = usize>,
     count: usize,
 ) {
-    let start = list.len();
-    list.resize(start + count, stage.template());
+    let stride = stage.layout.stride;
+    let start = data.len();
     let mut numbers = numbers;
     let light_all = stage.deferred.is_none();
-    for chunk in list[start..].chunks_mut(LANES) {
+    // Each group is written here, then appended: the list is written once, not first
+    // initialized.
+    let mut group = [0.0; LANES * MAX_STRIDE];
+    for first in (0..count).step_by(LANES) {
         // A short last group repeats its first vertex in the unused lanes.
+        let used = (count - first).min(LANES);
         let mut idx = [0; LANES];
-        for slot in &mut idx[..chunk.len()] {
+        for slot in &mut idx[..used] {
             *slot = numbers.next().unwrap_or_default();
         }
-        for k in chunk.len()..LANES {
+        for k in used..LANES {
             idx[k] = idx[0];
         }
-        stage.write_lanes(&idx, chunk, light_all);
+        let out = &mut group[..used * stride];
+        stage.write_lanes(&idx, out, light_all);
+        data.extend_from_slice(out);
     }
+    data.resize(data.len() + MAX_STRIDE, 0.0);
     let Some(d) = stage.deferred else {
         return;
     };
     // The vertex numbers are the dense range first ..= first + count − 1; the vertices to
     // light are gathered into full groups.
-    let vertices = &mut list[start..];
+    let vertices = &mut data[start..];
+    let pos = |v: &[f32], k: usize| Vec4::from_slice(&v[k * stride..k * stride + 4]);
     let mut idx = [0; LANES];
     let mut m = 0;
     for p in 0..count / d.step {
         let at = p * d.step;
-        if d.step == 3 && rejects(&vertices[at], &vertices[at + 1], &vertices[at + 2]) {
+        if d.step == 3
+            && rejects(
+                pos(vertices, at),
+                pos(vertices, at + 1),
+                pos(vertices, at + 2),
+            )
+        {
             continue;
         }
         let from = if d.provoking_only { d.step - 1 } else { 0 };
@@ -649,21 +642,23 @@ fn fill(
 #[inline(always)]
 fn light(
     stage: &transform::Stage<'_, '_>,
-    vertices: &mut [ClipVertex],
+    vertices: &mut [f32],
     first: usize,
     idx: &[usize; LANES],
     m: usize,
 ) {
+    let layout = &stage.layout;
     let (color, back_color) = stage.colors_lanes(idx, true, None, None);
     for (k, &i) in idx.iter().enumerate().take(m) {
-        let v = &mut vertices[i - first];
-        v.color = Vec4::new(color[0][k], color[1][k], color[2][k], color[3][k]);
-        v.back_color = Vec4::new(
-            back_color[0][k],
-            back_color[1][k],
-            back_color[2][k],
-            back_color[3][k],
-        );
+        let v = &mut vertices[(i - first) * layout.stride..];
+        for c in 0..4 {
+            v[4 + c] = color[c][k];
+        }
+        if layout.two_side() {
+            for c in 0..4 {
+                v[layout.back() + c] = back_color[c][k];
+            }
+        }
     }
 }
 

@@ -16,7 +16,7 @@
 use super::super::setup::{Coverage, Plane, Shading, Shape};
 use super::super::state::{RenderState, ShadeModel};
 use super::super::target::Rect;
-use super::super::vertex::ClipVertex;
+use super::super::vertex::VertexRef;
 use super::{window, Span, MAX_LINE_WIDTH};
 
 #[derive(Clone, Debug)]
@@ -60,27 +60,27 @@ fn plane_along(a: (f64, f64), d: (f64, f64), len2: f64, va: f64, vb: f64) -> Pla
 /// the flat-shaded color.
 pub fn setup(
     state: &RenderState,
-    a: &ClipVertex,
-    b: &ClipVertex,
-    provoking: &ClipVertex,
+    a: VertexRef<'_>,
+    b: VertexRef<'_>,
+    provoking: VertexRef<'_>,
     bounds: Rect,
 ) -> Option<Line> {
-    let (ax, ay, az, aw) = window(state, a.pos)?;
-    let (bx, by, bz, bw) = window(state, b.pos)?;
+    let (ax, ay, az, aw) = window(state, a.pos())?;
+    let (bx, by, bz, bw) = window(state, b.pos())?;
     let d = (bx - ax, by - ay);
     let len2 = d.0 * d.0 + d.1 * d.1;
     if len2 == 0.0 {
         return None;
     }
     let along = |va: f64, vb: f64| plane_along((ax, ay), d, len2, va, vb);
-    let flat = (state.shade_model == ShadeModel::Flat).then(|| provoking.color.to_array());
+    let flat = (state.shade_model == ShadeModel::Flat).then(|| provoking.color().to_array());
     let (tex, fog) =
         crate::setup::attribute_planes(state, &[a, b], &[aw, bw], &|f| along(f(0), f(1)));
     let shading = |coverage| Shading {
         origin: (0, 0),
         z: along(az, bz),
         inv_w: along(aw, bw),
-        color_w: std::array::from_fn(|c| along(a.color[c] as f64 * aw, b.color[c] as f64 * bw)),
+        color_w: std::array::from_fn(|c| along(a.color()[c] as f64 * aw, b.color()[c] as f64 * bw)),
         flat,
         coverage,
         tex: tex.clone(),

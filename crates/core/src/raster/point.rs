@@ -8,7 +8,7 @@
 use super::super::setup::{Coverage, Plane, Shading, Shape};
 use super::super::state::RenderState;
 use super::super::target::Rect;
-use super::super::vertex::ClipVertex;
+use super::super::vertex::VertexRef;
 use super::{window, Span, MAX_POINT_SIZE};
 
 #[derive(Clone, Debug)]
@@ -19,14 +19,15 @@ pub struct Point {
 
 /// Sets up point `v` (already known to be inside the clip volume) for rasterization inside
 /// `bounds`.
-pub fn setup(state: &RenderState, v: &ClipVertex, bounds: Rect) -> Option<Point> {
-    let (x, y, z, _) = window(state, v.pos)?;
+pub fn setup(state: &RenderState, v: VertexRef<'_>, bounds: Rect) -> Option<Point> {
+    let (x, y, z, _) = window(state, v.pos())?;
     // The vertex stage derived the size (state or array, attenuation, min and max); here it
     // is clamped to the supported range (NaN: 1).
-    let size = if v.point_size.is_nan() {
+    let size = v.point_size();
+    let size = if size.is_nan() {
         1.0
     } else {
-        v.point_size.clamp(1.0, MAX_POINT_SIZE) as f64
+        size.clamp(1.0, MAX_POINT_SIZE) as f64
     };
     let to_i = |v: f64| v.clamp(-(1 << 24) as f64, (1 << 24) as f64) as i32;
     // Sprites are squares: GL_POINT_SMOOTH does not apply to them.
@@ -101,8 +102,8 @@ pub fn setup(state: &RenderState, v: &ClipVertex, bounds: Rect) -> Option<Point>
             z: constant(z),
             inv_w: constant(1.0),
             // Both: span routines for smooth shading read the planes, the rest `flat`.
-            color_w: v.color.to_array().map(|c| constant(c as f64)),
-            flat: Some(v.color.to_array()),
+            color_w: v.color().to_array().map(|c| constant(c as f64)),
+            flat: Some(v.color().to_array()),
             coverage,
             tex,
             fog,

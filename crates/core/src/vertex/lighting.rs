@@ -516,7 +516,7 @@ mod tests {
             },
         );
         call.normal = super::super::AttribSource::Constant([n[0], n[1], n[2], 0.0]);
-        super::super::run(state, &call).unwrap()[0]
+        super::super::run(state, &call).unwrap().get(0).unpack()
     }
 
     fn close(a: Vec4, b: [f32; 4]) {
@@ -688,7 +688,7 @@ mod tests {
         );
         call.color = super::super::AttribSource::Constant([0.5, 0.25, 1.0, 0.5]);
         close(
-            super::super::run(&s, &call).unwrap()[0].color,
+            super::super::run(&s, &call).unwrap().get(0).color(),
             [0.5, 0.25, 1.0, 0.5],
         );
     }

@@ -3,11 +3,14 @@
 //! texture coordinates (generated or fetched, then the texture matrix), the derived point
 //! size and the user clip distances. [`Stage::new`] derives everything that is constant over a draw call.
 
-use glam::{Mat3, Mat4, Vec3, Vec4};
+#[cfg(test)]
+use glam::Vec3;
+use glam::{Mat3, Mat4, Vec4};
 
 use super::lighting::Prepared;
-use super::MAX_USER_PLANES;
-use super::{AttribArray, AttribSource, ClipVertex, DrawCall, Indices, Primitive};
+#[cfg(test)]
+use super::ClipVertex;
+use super::{AttribArray, AttribSource, DrawCall, Indices, Layout, Primitive};
 use crate::lanes::{max_ps, min_ps, Lane, LANES};
 use crate::state::{RenderState, ShadeModel, TexGen};
 use crate::TEXTURE_UNITS;
@@ -68,17 +71,11 @@ pub(super) struct Stage<'s, 'd> {
     /// Per palette matrix: it and its normal matrix.
     palette: Option<Vec<(Mat4, Mat3)>>,
     tex: [TexSource<'d>; TEXTURE_UNITS],
-    points: bool,
     attenuate: bool,
-    planes: usize,
-    two_side: bool,
-    /// Some unit's coordinates are generated from the normal (texgen).
+    /// An enabled unit's coordinates are generated from the normal (texgen).
     texgen: bool,
-    /// The texture coordinates of units whose are constant over the draw (the others
-    /// hold the default).
-    template_tex: [Vec4; TEXTURE_UNITS],
-    /// Some unit's coordinates are not constant.
-    tex_varies: bool,
+    /// What each vertex keeps.
+    pub layout: Layout,
     /// Lighting after transforming, only of the vertices whose colors are read (see
     /// [`Deferred`]).
     pub deferred: Option<Deferred>,
@@ -120,11 +117,11 @@ impl<'s, 'd> Stage<'s, 'd> {
                 }
             }
         });
-        let template_tex = tex.map(|src| match src {
-            TexSource::Constant(tc) => tc,
-            _ => Vec4::new(0.0, 0.0, 0.0, 1.0),
-        });
-        let tex_varies = tex.iter().any(|t| !matches!(t, TexSource::Constant(_)));
+        let layout = Layout::new(state, two_side, draw.primitive == Primitive::Points);
+        // Texgen of the enabled units: the others' coordinates are not kept.
+        let texgen = |g: TexGen| {
+            (0..TEXTURE_UNITS).any(|u| state.texgen[u] == Some(g) && layout.tex(u).is_some())
+        };
         let flat = state.shade_model == ShadeModel::Flat;
         let deferred = match (draw.primitive, draw.indices) {
             _ if lighting.is_none() => None,
@@ -155,7 +152,7 @@ impl<'s, 'd> Stage<'s, 'd> {
             need_eye: lighting.as_ref().is_some_and(Prepared::reads_position)
                 || state.fog.is_some()
                 || !state.clip_planes.is_empty()
-                || state.texgen.contains(&Some(TexGen::ReflectionMap))
+                || texgen(TexGen::ReflectionMap)
                 || state.matrix_palette.is_some()
                 || (draw.primitive == Primitive::Points
                     && state.point_params.attenuation != [1.0, 0.0, 0.0]),
@@ -165,13 +162,9 @@ impl<'s, 'd> Stage<'s, 'd> {
                 .as_ref()
                 .map(|p| p.iter().map(|m| (*m, normal_matrix(m))).collect()),
             tex,
-            template_tex,
-            tex_varies,
-            points: draw.primitive == Primitive::Points,
             attenuate: state.point_params.attenuation != [1.0, 0.0, 0.0],
-            planes: state.clip_planes.len().min(MAX_USER_PLANES),
-            two_side,
-            texgen: state.texgen.iter().any(Option::is_some),
+            texgen: texgen(TexGen::NormalMap) || texgen(TexGen::ReflectionMap),
+            layout,
             deferred,
         }
     }
@@ -238,7 +231,7 @@ impl<'s, 'd> Stage<'s, 'd> {
         let (color, back_color) = match &self.lighting {
             Some(l) => {
                 let front = l.shade(eye, normal, given, false);
-                let back = if self.two_side {
+                let back = if self.layout.two_side() {
                     l.shade(eye, -normal, given, true)
                 } else {
                     front
@@ -253,9 +246,9 @@ impl<'s, 'd> Stage<'s, 'd> {
         self.finish(i, pos, color, back_color, eye, normal, out);
     }
 
-    /// What follows the colors, for either path: texture coordinates, point size, clip
-    /// distances; then every field of `out` written.
-    #[inline(always)]
+    /// What follows the colors: texture coordinates, point size, clip distances; then
+    /// every field of `out` written.
+    #[cfg(test)]
     #[allow(clippy::too_many_arguments)]
     fn finish(
         &self,
@@ -284,24 +277,17 @@ impl<'s, 'd> Stage<'s, 'd> {
             };
             *t = matrix.map_or(tc, |m| m * tc);
         }
-        let point_size = if self.points {
+        let point_size = if self.layout.point_size().is_some() {
             self.point_size(i, eye)
         } else {
             1.0
         };
-        let mut clip_dist = [0.0; MAX_USER_PLANES];
+        let mut clip_dist = [0.0; super::MAX_USER_PLANES];
         for (d, plane) in clip_dist
             .iter_mut()
-            .zip(&self.state.clip_planes[..self.planes])
+            .zip(&self.state.clip_planes[..self.layout.planes])
         {
-            // Kept finite and never NaN (an infinite eye position can give either), so the
-            // clipper's interpolation parameters stay in [0, 1]; NaN counts as outside.
-            let v = plane.dot(eye);
-            *d = if v.is_nan() {
-                -f32::MAX
-            } else {
-                v.clamp(-f32::MAX, f32::MAX)
-            };
+            *d = clip_distance(*plane, eye);
         }
         // Field by field (the pattern is exhaustive, so a new field cannot be missed).
         let ClipVertex {
@@ -322,13 +308,16 @@ impl<'s, 'd> Stage<'s, 'd> {
         *out_clip_dist = clip_dist;
     }
 
-    /// Runs the vertices `idx` (`LANES` of them) into `out` (at most as many: lanes past
-    /// its end are computed and dropped), as `write` (the tests' one-vertex statement)
-    /// would one by one and bit for bit alike, with positions, normals and colors as
-    /// structures of arrays so transform, normalization and lighting vectorize across
-    /// vertices.
+    /// Runs the vertices `idx` (`LANES` of them) into `out` (`layout.stride` floats per
+    /// vertex, at most `LANES` vertices: lanes past its end are computed and dropped),
+    /// as `write` (the tests' one-vertex statement) would one by one and bit for bit
+    /// alike, with positions, normals and colors as structures of arrays so transform,
+    /// normalization and lighting vectorize across vertices. Only what the layout keeps
+    /// is computed.
     #[inline(always)]
-    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [ClipVertex], light: bool) {
+    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [f32], light: bool) {
+        let layout = &self.layout;
+        let stride = layout.stride;
         let mut p = [[0.0; LANES]; 4];
         self.draw.position.gather(idx, &mut p);
         let eye = if self.need_eye {
@@ -348,48 +337,57 @@ impl<'s, 'd> Stage<'s, 'd> {
         let normal = self.texgen.then(|| self.normals_lanes(idx));
         let (color, back_color) =
             self.colors_lanes(idx, light, self.need_eye.then_some(&eye), normal.as_ref());
-        // `out` holds `template()`: only what varies per vertex is written, component by
-        // component (assembling vectors from lanes costs more than the stores).
-        if self.points || self.planes > 0 {
-            let normal = normal.unwrap_or([[0.0; LANES]; 3]);
-            for (k, v) in out.iter_mut().enumerate().take(LANES) {
-                self.finish(
-                    idx[k],
-                    lane4(&pos, k),
-                    lane4(&color, k),
-                    lane4(&back_color, k),
-                    lane4(&eye, k),
-                    Vec3::new(normal[0][k], normal[1][k], normal[2][k]),
-                    v,
-                );
+        // The position and the color, at the same offsets in every layout.
+        for (v, k) in out.chunks_exact_mut(stride).zip(0..LANES) {
+            if let Some(v) = v.get_mut(..8) {
+                v.copy_from_slice(&[
+                    pos[0][k],
+                    pos[1][k],
+                    pos[2][k],
+                    pos[3][k],
+                    color[0][k],
+                    color[1][k],
+                    color[2][k],
+                    color[3][k],
+                ]);
             }
-            return;
         }
-        for (k, v) in out.iter_mut().enumerate().take(LANES) {
-            store_lane(&mut v.pos, &pos, k);
-            store_lane(&mut v.color, &color, k);
-            store_lane(&mut v.back_color, &back_color, k);
-            v.eye = Vec3::new(eye[0][k], eye[1][k], eye[2][k]);
+        if layout.two_side() {
+            store(out, stride, layout.back(), &back_color);
         }
-        if self.tex_varies {
-            for (u, src) in self.tex.iter().enumerate() {
-                let (mut tc, matrix) = match *src {
-                    TexSource::Constant(_) => continue,
-                    TexSource::Array(a, matrix) => {
-                        let mut tc = [[0.0; LANES]; 4];
-                        a.gather(idx, &mut tc);
-                        (tc, matrix)
-                    }
-                    TexSource::Gen(g, matrix) => {
-                        let n = normal.as_ref().expect("texgen reads the normals");
-                        (texgen_lanes(g, n, &eye), matrix)
-                    }
-                };
-                if let Some(m) = matrix {
-                    tc = mat4_lanes(&m, &tc);
+        for (u, src) in self.tex.iter().enumerate() {
+            let Some(at) = layout.tex(u) else { continue };
+            let (mut tc, matrix) = match *src {
+                TexSource::Constant(tc) => (tc.to_array().map(|c| [c; LANES]), None),
+                TexSource::Array(a, matrix) => {
+                    let mut tc = [[0.0; LANES]; 4];
+                    a.gather(idx, &mut tc);
+                    (tc, matrix)
                 }
-                for (k, v) in out.iter_mut().enumerate().take(LANES) {
-                    store_lane(&mut v.tex[u], &tc, k);
+                TexSource::Gen(g, matrix) => {
+                    let n = normal.as_ref().expect("texgen reads the normals");
+                    (texgen_lanes(g, n, &eye), matrix)
+                }
+            };
+            if let Some(m) = matrix {
+                tc = mat4_lanes(&m, &tc);
+            }
+            store(out, stride, at, &tc);
+        }
+        if let Some(at) = layout.eye_z() {
+            for (v, k) in out.chunks_exact_mut(stride).zip(0..LANES) {
+                v[at] = eye[2][k];
+            }
+        }
+        if layout.point_size().is_some() || layout.planes > 0 {
+            let planes = &self.state.clip_planes[..layout.planes];
+            for (v, k) in out.chunks_exact_mut(stride).zip(0..LANES) {
+                let e = Vec4::new(eye[0][k], eye[1][k], eye[2][k], eye[3][k]);
+                if let Some(at) = layout.point_size() {
+                    v[at] = self.point_size(idx[k], e);
+                }
+                for (j, &plane) in planes.iter().enumerate() {
+                    v[layout.clip(j)] = clip_distance(plane, e);
                 }
             }
         }
@@ -445,11 +443,18 @@ impl<'s, 'd> Stage<'s, 'd> {
         eye: Option<&[Lane<f32>; 4]>,
         normal: Option<&[Lane<f32>; 3]>,
     ) -> ([Lane<f32>; 4], [Lane<f32>; 4]) {
+        if self.lighting.is_some() && !light {
+            // Deferred: lit later if a pixel reads the color; if not, it is never read.
+            return ([[0.0; LANES]; 4], [[0.0; LANES]; 4]);
+        }
         let mut given = [[0.0; LANES]; 4];
         self.draw.color.gather(idx, &mut given);
-        let Some(l) = self.lighting.as_ref().filter(|_| light) else {
-            for v in given.iter_mut().flatten() {
-                *v = min_ps(max_ps(*v, 0.0), 1.0);
+        let Some(l) = &self.lighting else {
+            // Row by row (a flattened iterator does not vectorize).
+            for row in &mut given {
+                for v in row {
+                    *v = min_ps(max_ps(*v, 0.0), 1.0);
+                }
             }
             return (given, given);
         };
@@ -470,7 +475,7 @@ impl<'s, 'd> Stage<'s, 'd> {
             None => &[[0.0; LANES]; 4],
         };
         let front = l.shade_lanes(eye, &normal, &given, false);
-        let back = if self.two_side {
+        let back = if self.layout.two_side() {
             for v in normal.iter_mut().flatten() {
                 *v = -*v;
             }
@@ -539,15 +544,6 @@ impl<'s, 'd> Stage<'s, 'd> {
         sum
     }
 
-    /// The vertex `fill` initializes the list with: the values that are the same for every
-    /// vertex of the draw where [`write_lanes`](Self::write_lanes) can skip them
-    /// (constant texture coordinates, no point size, no clip distances).
-    pub fn template(&self) -> ClipVertex {
-        let mut v = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
-        v.tex = self.template_tex;
-        v
-    }
-
     /// ES 1.1 §3.3: the size (array or state) times sqrt(1 / (a + b·d + c·d²)), d the
     /// distance from the eye, clamped to [min, max]. A denominator that is not positive
     /// (the coefficients may be anything) is the limit from above: the size is `max`.
@@ -608,17 +604,28 @@ fn palette_terms<'a>(draw: &'a DrawCall<'_>, i: usize) -> impl Iterator<Item = (
     (0..palette_units(draw)).map(move |t| palette_term(draw, t, index[t], weight[t]))
 }
 
+/// Writes the lanes of `a` at offset `at` of each vertex of `out` (`stride` floats each),
+/// component by component: assembling vectors from lanes costs more than the stores.
 #[inline(always)]
-fn store_lane(v: &mut Vec4, a: &[Lane<f32>; 4], k: usize) {
-    v.x = a[0][k];
-    v.y = a[1][k];
-    v.z = a[2][k];
-    v.w = a[3][k];
+fn store(out: &mut [f32], stride: usize, at: usize, a: &[Lane<f32>; 4]) {
+    for (v, k) in out.chunks_exact_mut(stride).zip(0..LANES) {
+        if let Some(v) = v.get_mut(at..at + 4) {
+            v.copy_from_slice(&[a[0][k], a[1][k], a[2][k], a[3][k]]);
+        }
+    }
 }
 
-#[inline(always)]
-fn lane4(a: &[Lane<f32>; 4], k: usize) -> Vec4 {
-    Vec4::new(a[0][k], a[1][k], a[2][k], a[3][k])
+/// The signed distance of eye position `eye` to user plane `plane`, kept finite and never
+/// NaN (an infinite eye position can give either), so the clipper's interpolation
+/// parameters stay in [0, 1]; NaN counts as outside.
+#[inline]
+fn clip_distance(plane: Vec4, eye: Vec4) -> f32 {
+    let v = plane.dot(eye);
+    if v.is_nan() {
+        -f32::MAX
+    } else {
+        v.clamp(-f32::MAX, f32::MAX)
+    }
 }
 
 /// `m · p` for each lane, in `Mat4 * Vec4`'s order: ((x·c₀ + y·c₁) + z·c₂) + w·c₃.
@@ -703,40 +710,53 @@ mod tests {
         v.iter().flat_map(|v| v.to_ne_bytes()).collect()
     }
 
-    /// [`bits`] of vertex `i` of a draw of `n` vertices from `first` under `stage`, the
-    /// colors left out where deferred lighting leaves them unlit because no pixel reads
-    /// them (the lanes defer; the one-vertex statement lights every vertex).
+    /// The bits of vertex `i`'s `floats` (in the stage's layout, NaN included, for exact
+    /// comparison) of a draw of `n` vertices from `first` whose triangle has clip
+    /// positions `tri`, the colors left out where deferred lighting leaves them unlit
+    /// because no pixel reads them (the lanes defer; the one-vertex statement lights every
+    /// vertex).
     fn read_bits(
         stage: &Stage<'_, '_>,
-        v: &ClipVertex,
-        tri: [&ClipVertex; 3],
+        floats: &[f32],
+        tri: [Vec4; 3],
         i: usize,
         n: usize,
     ) -> Vec<u32> {
-        let mut v = *v;
+        let layout = &stage.layout;
+        let mut f = floats[..layout.stride].to_vec();
         if let Some(d) = stage.deferred {
             let k = i - d.first;
             let whole = k < n / d.step * d.step;
             let rejected = d.step == 3 && rejects(tri[0], tri[1], tri[2]);
             let provoking = k % d.step == d.step - 1;
             if !whole || rejected || (d.provoking_only && !provoking) {
-                v.color = Vec4::ZERO;
-                v.back_color = Vec4::ZERO;
+                f[4..8].fill(0.0);
+                f[layout.back()..layout.back() + 4].fill(0.0);
             }
         }
-        bits(&v)
+        f.into_iter().map(f32::to_bits).collect()
     }
 
-    /// Every float of a vertex, as bits, for exact comparison (NaN included).
-    fn bits(v: &ClipVertex) -> Vec<u32> {
-        let mut f = Vec::new();
-        for a in [v.pos, v.color, v.back_color].into_iter().chain(v.tex) {
-            f.extend(a.to_array());
+    /// A texture unit that reads its coordinates (the layout keeps only enabled units).
+    fn unit() -> crate::texenv::TextureUnit {
+        use crate::texture::{Image, MagFilter, MinFilter, Sampler, Wrap};
+        let image = Image {
+            width: 1,
+            height: 1,
+            format: crate::texture::BaseFormat::Rgba,
+            texels: vec![u32::MAX],
+        };
+        crate::texenv::TextureUnit {
+            sampler: std::sync::Arc::new(Sampler::new(
+                vec![std::sync::Arc::new(image)],
+                MinFilter::Nearest,
+                MagFilter::Nearest,
+                Wrap::Repeat,
+                Wrap::Repeat,
+            )),
+            env: crate::texenv::TexEnv::default(),
+            coord_replace: false,
         }
-        f.extend(v.eye.to_array());
-        f.push(v.point_size);
-        f.extend(v.clip_dist);
-        f.into_iter().map(f32::to_bits).collect()
     }
 
     #[test]
@@ -821,6 +841,19 @@ mod tests {
             s.projection = Mat4::perspective_rh_gl(0.9, 1.3, 0.5, 20.0);
             s.normalize = case & 1 != 0;
             s.rescale_normal = case & 2 != 0;
+            // What the vertices keep: all four units, or (odd cases) units 0 and 2 and the
+            // eye z for fog.
+            s.textures = std::array::from_fn(|u| (case & 1 == 0 || u % 2 == 0).then(unit));
+            if case & 1 != 0 {
+                s.fog = Some(crate::texenv::Fog {
+                    mode: crate::texenv::FogMode::Linear,
+                    density: 1.0,
+                    start: 0.0,
+                    end: 1.0,
+                    color: [0.0; 4],
+                    quality: crate::quality::Quality::Balanced,
+                });
+            }
             if case & 4 != 0 {
                 let mut l = Lighting {
                     lights: vec![
@@ -910,11 +943,11 @@ mod tests {
             for i in 0..n {
                 let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
                 stage.write(i, &mut one);
-                let t = |k: usize| &v[(i / 3 * 3 + k).min(n - 1)];
+                let t = |k: usize| v.get((i / 3 * 3 + k).min(n - 1)).pos();
                 let tri = [t(0), t(1), t(2)];
                 assert_eq!(
-                    read_bits(&stage, &v[i], tri, i, n),
-                    read_bits(&stage, &one, tri, i, n),
+                    read_bits(&stage, v.get(i).floats, tri, i, n),
+                    read_bits(&stage, &stage.layout.pack(&one), tri, i, n),
                     "case {case}, vertex {i}"
                 );
             }
@@ -1045,16 +1078,18 @@ mod tests {
                 d.color = AttribSource::Array(arrays[2]);
                 d.texcoord[0] = AttribSource::Array(arrays[3]);
                 d.texcoord[1] = AttribSource::Array(arrays[0]);
+                s.textures[0] = Some(unit());
+                s.textures[1] = Some(unit());
                 let stage = Stage::new(&s, &d);
                 let v = run(&s, &d).unwrap();
                 for i in 0..n {
                     let mut one = ClipVertex::new(Vec4::ZERO, Vec4::ZERO);
                     stage.write(i, &mut one);
-                    let t = |k: usize| &v[(i / 3 * 3 + k).min(n - 1)];
+                    let t = |k: usize| v.get((i / 3 * 3 + k).min(n - 1)).pos();
                     let tri = [t(0), t(1), t(2)];
                     assert_eq!(
-                        read_bits(&stage, &v[i], tri, i, n),
-                        read_bits(&stage, &one, tri, i, n),
+                        read_bits(&stage, v.get(i).floats, tri, i, n),
+                        read_bits(&stage, &stage.layout.pack(&one), tri, i, n),
                         "layout {l}, case {case}, vertex {i}"
                     );
                     // And the conversion is the scalar fetch's, component by component.
@@ -1191,12 +1226,9 @@ mod tests {
         s.clip_planes = vec![eye_plane];
         let b = bytes(&[0.5, 0.0, 0.0, 1.5, 0.0, 0.0]);
         let v = run(&s, &draw(&b, Primitive::Points, 2)).unwrap();
-        assert!(v[0].clip_dist[0] < 0.0 && v[1].clip_dist[0] > 0.0);
-        assert!(
-            (v[1].clip_dist[0] - 0.5).abs() < 1e-6,
-            "{}",
-            v[1].clip_dist[0]
-        );
+        let d = |i| v.get(i).clip_dist(0);
+        assert!(d(0) < 0.0 && d(1) > 0.0);
+        assert!((d(1) - 0.5).abs() < 1e-6, "{}", d(1));
     }
 
     #[test]
@@ -1205,13 +1237,15 @@ mod tests {
         s.point_size = 8.0;
         s.point_params.attenuation = [0.0, 0.0, 1.0];
         let b = bytes(&[0.0, 0.0, -2.0, 0.0, 0.0, -0.1, 0.0, 0.0, 0.0]);
-        let v = run(&s, &draw(&b, Primitive::Points, 3)).unwrap();
-        assert_eq!(v[0].point_size, 4.0, "8 · sqrt(1 / 2²)");
-        assert_eq!(v[1].point_size, s.point_params.size_max, "clamped to max");
-        assert_eq!(v[2].point_size, s.point_params.size_max, "zero denominator");
+        let size = |s: &RenderState, i| {
+            let v = run(s, &draw(&b, Primitive::Points, 3)).unwrap();
+            v.get(i).point_size()
+        };
+        assert_eq!(size(&s, 0), 4.0, "8 · sqrt(1 / 2²)");
+        assert_eq!(size(&s, 1), s.point_params.size_max, "clamped to max");
+        assert_eq!(size(&s, 2), s.point_params.size_max, "zero denominator");
         s.point_params.size_min = 5.0;
-        let v = run(&s, &draw(&b, Primitive::Points, 3)).unwrap();
-        assert_eq!(v[0].point_size, 5.0, "clamped to min");
+        assert_eq!(size(&s, 0), 5.0, "clamped to min");
     }
 
     #[test]
@@ -1221,9 +1255,11 @@ mod tests {
         let b = bytes(&[0.0; 3]);
         let mut d = draw(&b, Primitive::Triangles, 1);
         d.texcoord[1] = AttribSource::Constant([0.5, 0.5, 0.0, 2.0]);
+        s.textures = [Some(unit()), Some(unit()), None, None];
         let v = run(&s, &d).unwrap();
-        assert_eq!(v[0].tex[1], Vec4::new(1.0, 1.5, 0.0, 2.0));
-        assert_eq!(v[0].tex[0], Vec4::new(0.0, 0.0, 0.0, 1.0));
+        assert_eq!(v.get(0).tex(1), Vec4::new(1.0, 1.5, 0.0, 2.0));
+        assert_eq!(v.get(0).tex(0), Vec4::new(0.0, 0.0, 0.0, 1.0));
+        assert_eq!(v.get(0).layout.stride, 16, "position, color, two units");
     }
 
     #[test]
@@ -1252,10 +1288,11 @@ mod tests {
             normalized: false,
         });
         d.position.stride = 0;
+        // The projection is the identity: clip positions are the eye positions.
         let v = run(&s, &d).unwrap();
-        assert_eq!(v[0].eye, Vec3::new(0.5, 3.0, 0.0));
+        assert_eq!(v.get(0).pos(), Vec4::new(0.5, 3.0, 0.0, 1.0));
         // Index 7 is past the palette: it contributes nothing.
-        assert_eq!(v[1].eye, Vec3::new(0.0, 4.0, 0.0));
+        assert_eq!(v.get(1).pos(), Vec4::new(0.0, 4.0, 0.0, 1.0));
     }
 
     #[test]
@@ -1267,8 +1304,8 @@ mod tests {
         let ix = [3u16, 65535, 3];
         d.indices = Indices::U16(&ix);
         let v = run(&s, &d).unwrap();
-        assert_eq!(v.list.len(), 2);
-        assert_eq!(v[65535].pos.x, 7.0);
-        assert_eq!(v[3].pos.x, 0.0);
+        assert_eq!(v.len(), 2);
+        assert_eq!(v.get(65535).pos().x, 7.0);
+        assert_eq!(v.get(3).pos().x, 0.0);
     }
 }

@@ -352,6 +352,24 @@ fn vertex_rows() -> Vec<VertexRow> {
     state.modelview = mv;
     state.projection = proj;
     state.texture_matrices[0] = texm;
+    // Vertices keep the coordinates of enabled units only: unit 0 samples a 1 × 1 image.
+    let white = gles_cm_core::texture::Image {
+        width: 1,
+        height: 1,
+        format: gles_cm_core::texture::BaseFormat::Rgba,
+        texels: vec![u32::MAX],
+    };
+    state.textures[0] = Some(gles_cm_core::texenv::TextureUnit {
+        sampler: std::sync::Arc::new(gles_cm_core::texture::Sampler::new(
+            vec![std::sync::Arc::new(white)],
+            MinFilter::Nearest,
+            MagFilter::Nearest,
+            gles_cm_core::texture::Wrap::Repeat,
+            gles_cm_core::texture::Wrap::Repeat,
+        )),
+        env: gles_cm_core::texenv::TexEnv::default(),
+        coord_replace: false,
+    });
     let mvp = (proj.as_dmat4()) * mv.as_dmat4();
     let n = 20_000;
     let mut rows = Vec::new();
@@ -408,7 +426,7 @@ fn vertex_rows() -> Vec<VertexRow> {
         let worst = (0..n)
             .map(|k| {
                 let [x, y, z] = exact[k];
-                rel_err(mvp, DVec4::new(x, y, z, 1.0), out[k].pos.to_array())
+                rel_err(mvp, DVec4::new(x, y, z, 1.0), out.get(k).pos().to_array())
             })
             .fold(0.0, f64::max);
         rows.push(VertexRow {
@@ -481,7 +499,7 @@ fn vertex_rows() -> Vec<VertexRow> {
                 (0..4)
                     .map(|i| {
                         let exact = vals[4 * k + i].clamp(0.0, 1.0);
-                        (out[k].color[i] as f64 - exact).abs()
+                        (out.get(k).color()[i] as f64 - exact).abs()
                     })
                     .fold(0.0, f64::max)
             })
@@ -496,7 +514,7 @@ fn vertex_rows() -> Vec<VertexRow> {
         let tex_worst = (0..n)
             .map(|k| {
                 let v = DVec4::from_slice(&vals[4 * k..4 * k + 4]);
-                rel_err(tm, v, out[k].tex[0].to_array())
+                rel_err(tm, v, out.get(k).tex(0).to_array())
             })
             .fold(0.0, f64::max);
         rows.push(VertexRow {
