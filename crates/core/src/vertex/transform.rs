@@ -431,10 +431,10 @@ impl<'s, 'd> Stage<'s, 'd> {
     }
 
     /// The front and back colors of vertices `idx` for [`write_lanes`](Self::write_lanes):
-    /// lit when lighting is on and `light` (false for vertices whose lighting is
-    /// [`Deferred`]), otherwise the given
-    /// colors clamped. `eye` and `normal` hold their eye positions and normals when the
-    /// caller has them; they are worked out here when lighting needs them and it does not.
+    /// without lighting the given colors clamped; with lighting, lit when `light`, and
+    /// zero (nothing reads them before [`Deferred`] lighting does) when not. `eye` and
+    /// `normal` hold their eye positions and normals when the caller has them; they are
+    /// worked out here when lighting needs them and it does not.
     #[inline(always)]
     pub fn colors_lanes(
         &self,
