@@ -143,12 +143,15 @@ fn assert_clean(t: &Target, lo: [u8; 4], hi: [u8; 4]) {
     }
 }
 
-/// The vertex stage's output for a draw: every value finite.
+/// The vertex stage's output for a draw, every texture unit enabled so that every unit's
+/// coordinates are computed: every value finite.
 fn assert_vertices_finite(
     s: &RenderState,
     d: &DrawCall<'_>,
 ) -> Vec<gles_cm_core::vertex::ClipVertex> {
-    let v = gles_cm_core::vertex::run(s, d).unwrap();
+    let mut s = s.clone();
+    s.textures = std::array::from_fn(|_| Some(gles_cm_core::texenv::TextureUnit::white()));
+    let v = gles_cm_core::vertex::run(&s, d).unwrap();
     let (lo, hi) = d.indices.range().unwrap();
     let out: Vec<_> = (lo..=hi).map(|i| v.get(i).unpack()).collect();
     for v in &out {

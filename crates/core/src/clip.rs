@@ -15,7 +15,7 @@
 
 use glam::Vec4;
 
-use super::vertex::{lerp, rejects, Floats, Layout, VertexRef, MAX_STRIDE};
+use super::vertex::{all_finite, lerp, rejects, Floats, Layout, VertexRef, MAX_STRIDE};
 
 /// The smallest w that survives clipping. A vertex at (0, 0, 0, 0) lies inside all six
 /// frustum planes, so this plane is what keeps 1/w finite.
@@ -134,7 +134,7 @@ const SPREAD: [u16; 16] = {
 /// Clips segment (a, b) against the clip volume and the enabled user planes, and calls
 /// `emit` with what is left, in the original direction, or not at all when nothing is.
 pub fn line(a: VertexRef<'_>, b: VertexRef<'_>, emit: impl FnOnce(VertexRef<'_>, VertexRef<'_>)) {
-    if !(a.pos().is_finite() && b.pos().is_finite()) {
+    if !all_finite([a.pos(), b.pos()]) {
         return;
     }
     let n = plane_count(a.layout);
@@ -174,7 +174,7 @@ pub fn line(a: VertexRef<'_>, b: VertexRef<'_>, emit: impl FnOnce(VertexRef<'_>,
 /// enabled user planes. (A wide point whose center is inside is drawn whole; one whose
 /// center is outside is not drawn.)
 pub fn point(v: VertexRef<'_>) -> bool {
-    v.pos().is_finite()
+    all_finite([v.pos()])
         && distances(v)[..plane_count(v.layout)]
             .iter()
             .all(|&d| d >= 0.0)

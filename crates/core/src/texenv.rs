@@ -132,6 +132,31 @@ pub struct TextureUnit {
     pub coord_replace: bool,
 }
 
+impl TextureUnit {
+    /// A unit sampling a 1 × 1 white image with the default environment: for tests and
+    /// tools that need a unit enabled (vertices keep the coordinates of enabled units only).
+    pub fn white() -> TextureUnit {
+        use super::texture::{Image, MagFilter, MinFilter, Wrap};
+        let image = Image {
+            width: 1,
+            height: 1,
+            format: BaseFormat::Rgba,
+            texels: vec![u32::MAX],
+        };
+        TextureUnit {
+            sampler: Arc::new(Sampler::new(
+                vec![Arc::new(image)],
+                MinFilter::Nearest,
+                MagFilter::Nearest,
+                Wrap::Repeat,
+                Wrap::Repeat,
+            )),
+            env: TexEnv::default(),
+            coord_replace: false,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum FogMode {
     Linear,

@@ -448,16 +448,23 @@ fn frustum_code(p: Vec4) -> u32 {
         .bitmask()
 }
 
+/// Whether every coordinate of `ps` is finite: x · 0 is 0 for finite x and NaN otherwise.
+/// glam's `is_finite` was not inlined where clipping and the vertex stage call it (a call
+/// per vertex in callgrind's counts).
+#[inline]
+pub fn all_finite<const N: usize>(ps: [Vec4; N]) -> bool {
+    let zero = ps.iter().fold(Vec4::ZERO, |z, p| z + *p * 0.0);
+    zero.cmpeq(Vec4::ZERO).all()
+}
+
 /// Whether clipping drops the triangle with clip positions (a, b, c) from the positions
 /// alone, before any clipping: [`clip::triangle`](super::clip::triangle) asks this first,
 /// and the deferred lighting lights no vertex of such a triangle.
 #[inline]
 pub fn rejects(a: Vec4, b: Vec4, c: Vec4) -> bool {
     // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
-    // than let NaN reach the rasterizer. x · 0 is 0 for finite x and NaN otherwise (glam's
-    // `is_finite` is not inlined into the instruction-set clones: a call per vertex).
-    let zero = a * 0.0 + b * 0.0 + c * 0.0;
-    if !zero.cmpeq(Vec4::ZERO).all() {
+    // than let NaN reach the rasterizer.
+    if !all_finite([a, b, c]) {
         return true;
     }
     // Outside one of the frustum's x or y planes with all three vertices, the triangle is
@@ -476,7 +483,6 @@ pub struct Vertices {
     /// `layout.stride` floats per vertex, then padding to make the last vertex's view a
     /// whole [`Floats`].
     data: Vec<f32>,
-    count: usize,
     layout: Layout,
     map: VertexMap,
 }
@@ -504,12 +510,9 @@ impl Vertices {
     }
 
     /// How many vertices were transformed.
-    pub fn len(&self) -> usize {
-        self.count
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.count == 0
+    #[cfg(test)]
+    fn len(&self) -> usize {
+        self.data.len().saturating_sub(MAX_STRIDE) / self.layout.stride
     }
 }
 
@@ -524,7 +527,6 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     let Some((lo, hi)) = draw.indices.range() else {
         return Ok(Vertices {
             data,
-            count: 0,
             layout,
             map: VertexMap::Dense { base: 0 },
         });
@@ -544,7 +546,6 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
         fill(&mut data, &stage, lo..=hi, span);
         return Ok(Vertices {
             data,
-            count: span,
             layout,
             map: VertexMap::Dense { base: lo },
         });
@@ -558,7 +559,6 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     fill(&mut data, &stage, keys.iter().copied(), keys.len());
     Ok(Vertices {
         data,
-        count: keys.len(),
         layout,
         map: VertexMap::Sparse { keys },
     })

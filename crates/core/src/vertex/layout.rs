@@ -53,6 +53,29 @@ impl Layout {
     /// The layout of a draw of `points` (or not) under `state`, with a back color when
     /// `two_side`.
     pub fn new(state: &RenderState, two_side: bool, points: bool) -> Layout {
+        Layout::keeping(
+            two_side,
+            state.textures.each_ref().map(Option::is_some),
+            state.fog.is_some(),
+            points,
+            state.clip_planes.len(),
+        )
+    }
+
+    /// The layout that keeps everything, with `planes` user planes (for tests and tools).
+    pub fn full(planes: usize) -> Layout {
+        Layout::keeping(true, [true; TEXTURE_UNITS], true, true, planes)
+    }
+
+    /// The layout keeping a back color, the units `units`, the eye z, the point size and
+    /// the distances to `planes` user planes (at most six).
+    fn keeping(
+        two_side: bool,
+        units: [bool; TEXTURE_UNITS],
+        eye_z: bool,
+        points: bool,
+        planes: usize,
+    ) -> Layout {
         let mut at = 8;
         let mut take = |present: bool, n: usize| {
             present.then(|| {
@@ -61,10 +84,10 @@ impl Layout {
             })
         };
         let back = take(two_side, 4).unwrap_or(Self::COLOR);
-        let tex = std::array::from_fn(|u| take(state.textures[u].is_some(), 4));
-        let eye_z = take(state.fog.is_some(), 1);
+        let tex = units.map(|on| take(on, 4));
+        let eye_z = take(eye_z, 1);
         let point_size = take(points, 1);
-        let planes = state.clip_planes.len().min(MAX_USER_PLANES);
+        let planes = planes.min(MAX_USER_PLANES);
         let clip = at;
         Layout {
             stride: clip + planes,
@@ -226,20 +249,6 @@ impl ClipVertex {
 }
 
 impl Layout {
-    /// The layout that keeps everything, with `planes` user planes.
-    pub fn full(planes: usize) -> Layout {
-        let clip = 14 + 4 * TEXTURE_UNITS;
-        Layout {
-            stride: clip + planes,
-            back: 8,
-            tex: std::array::from_fn(|u| Some(12 + 4 * u)),
-            eye_z: Some(12 + 4 * TEXTURE_UNITS),
-            point_size: Some(13 + 4 * TEXTURE_UNITS),
-            clip,
-            planes,
-        }
-    }
-
     /// The values of `v` this layout keeps (the floats past `stride` are 0).
     pub fn pack(&self, v: &ClipVertex) -> Floats {
         let mut f = [0.0; MAX_STRIDE];

@@ -691,6 +691,7 @@ fn clamp01(c: Vec4) -> Vec4 {
 mod tests {
     use super::super::{rejects, run, AttribSource, ComponentType, Indices};
     use super::*;
+    use crate::texenv::TextureUnit;
 
     fn draw<'a>(bytes: &'a [u8], prim: Primitive, count: usize) -> DrawCall<'a> {
         DrawCall::new(
@@ -735,28 +736,6 @@ mod tests {
             }
         }
         f.into_iter().map(f32::to_bits).collect()
-    }
-
-    /// A texture unit that reads its coordinates (the layout keeps only enabled units).
-    fn unit() -> crate::texenv::TextureUnit {
-        use crate::texture::{Image, MagFilter, MinFilter, Sampler, Wrap};
-        let image = Image {
-            width: 1,
-            height: 1,
-            format: crate::texture::BaseFormat::Rgba,
-            texels: vec![u32::MAX],
-        };
-        crate::texenv::TextureUnit {
-            sampler: std::sync::Arc::new(Sampler::new(
-                vec![std::sync::Arc::new(image)],
-                MinFilter::Nearest,
-                MagFilter::Nearest,
-                Wrap::Repeat,
-                Wrap::Repeat,
-            )),
-            env: crate::texenv::TexEnv::default(),
-            coord_replace: false,
-        }
     }
 
     #[test]
@@ -843,7 +822,8 @@ mod tests {
             s.rescale_normal = case & 2 != 0;
             // What the vertices keep: all four units, or (odd cases) units 0 and 2 and the
             // eye z for fog.
-            s.textures = std::array::from_fn(|u| (case & 1 == 0 || u % 2 == 0).then(unit));
+            s.textures =
+                std::array::from_fn(|u| (case & 1 == 0 || u % 2 == 0).then(TextureUnit::white));
             if case & 1 != 0 {
                 s.fog = Some(crate::texenv::Fog {
                     mode: crate::texenv::FogMode::Linear,
@@ -1078,8 +1058,8 @@ mod tests {
                 d.color = AttribSource::Array(arrays[2]);
                 d.texcoord[0] = AttribSource::Array(arrays[3]);
                 d.texcoord[1] = AttribSource::Array(arrays[0]);
-                s.textures[0] = Some(unit());
-                s.textures[1] = Some(unit());
+                s.textures[0] = Some(TextureUnit::white());
+                s.textures[1] = Some(TextureUnit::white());
                 let stage = Stage::new(&s, &d);
                 let v = run(&s, &d).unwrap();
                 for i in 0..n {
@@ -1255,7 +1235,12 @@ mod tests {
         let b = bytes(&[0.0; 3]);
         let mut d = draw(&b, Primitive::Triangles, 1);
         d.texcoord[1] = AttribSource::Constant([0.5, 0.5, 0.0, 2.0]);
-        s.textures = [Some(unit()), Some(unit()), None, None];
+        s.textures = [
+            Some(TextureUnit::white()),
+            Some(TextureUnit::white()),
+            None,
+            None,
+        ];
         let v = run(&s, &d).unwrap();
         assert_eq!(v.get(0).tex(1), Vec4::new(1.0, 1.5, 0.0, 2.0));
         assert_eq!(v.get(0).tex(0), Vec4::new(0.0, 0.0, 0.0, 1.0));

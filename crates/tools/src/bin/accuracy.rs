@@ -352,24 +352,8 @@ fn vertex_rows() -> Vec<VertexRow> {
     state.modelview = mv;
     state.projection = proj;
     state.texture_matrices[0] = texm;
-    // Vertices keep the coordinates of enabled units only: unit 0 samples a 1 × 1 image.
-    let white = gles_cm_core::texture::Image {
-        width: 1,
-        height: 1,
-        format: gles_cm_core::texture::BaseFormat::Rgba,
-        texels: vec![u32::MAX],
-    };
-    state.textures[0] = Some(gles_cm_core::texenv::TextureUnit {
-        sampler: std::sync::Arc::new(gles_cm_core::texture::Sampler::new(
-            vec![std::sync::Arc::new(white)],
-            MinFilter::Nearest,
-            MagFilter::Nearest,
-            gles_cm_core::texture::Wrap::Repeat,
-            gles_cm_core::texture::Wrap::Repeat,
-        )),
-        env: gles_cm_core::texenv::TexEnv::default(),
-        coord_replace: false,
-    });
+    // Vertices keep the coordinates of enabled units only.
+    state.textures[0] = Some(gles_cm_core::texenv::TextureUnit::white());
     let mvp = (proj.as_dmat4()) * mv.as_dmat4();
     let n = 20_000;
     let mut rows = Vec::new();
