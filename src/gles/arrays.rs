@@ -307,8 +307,8 @@ impl Context {
         call.point_size = point_size;
         call.matrix_index = matrix_index;
         call.weight = weight;
-        let recorded = self
-            .with_frame(|frame, target| gles_cm_core::record_into(&state, &call, frame, target));
+        let recorded =
+            self.with_frame(|frame, to| gles_cm_core::record_into(&state, &call, frame, to));
         if let Some(Err(_)) = recorded {
             self.set_error(GL_OUT_OF_MEMORY);
         }

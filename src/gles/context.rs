@@ -9,8 +9,8 @@ use glam::Mat4;
 
 use gles_cm_core::state::Quality;
 use gles_cm_core::{
-    CompareFunc, CullFace, Frame, Rect, RenderState, ShadeModel, Target, TargetFormat, Viewport,
-    Winding,
+    CompareFunc, CullFace, Destination, Frame, Rect, RenderState, ShadeModel, SharedTarget, Target,
+    TargetFormat, Viewport, Winding,
 };
 
 use super::arrays::ClientArrays;
@@ -33,6 +33,44 @@ pub trait Surface: Send + Sync {
     /// Called after `glFinish` (and other points where the specification says rendering to
     /// the surface is complete) with the target unlocked.
     fn rendering_complete(&self) {}
+}
+
+/// A surface as the core's workers see it: a target they lock while the context records on
+/// ([`Frame::flush_behind`]).
+pub(super) struct SurfaceTarget(Arc<dyn Surface>);
+
+impl SharedTarget for SurfaceTarget {
+    fn target(&self) -> &Mutex<Target> {
+        self.0.target()
+    }
+}
+
+/// The frame that records work for one surface, and that surface.
+pub(super) struct Recording {
+    frame: Frame,
+    surface: Arc<SurfaceTarget>,
+}
+
+impl Recording {
+    /// True when the frame records for `surface` (the same object; a surface's target
+    /// never changes size or format).
+    fn is_for(&self, surface: &Arc<dyn Surface>) -> bool {
+        std::ptr::addr_eq(Arc::as_ptr(&self.surface.0), Arc::as_ptr(surface))
+    }
+
+    /// The surface's format, when the frame records for `surface`.
+    pub(super) fn format_for(&self, surface: &Arc<dyn Surface>) -> Option<TargetFormat> {
+        self.is_for(surface).then(|| self.frame.format())
+    }
+
+    /// Rasterizes everything recorded and waits for what the workers have.
+    fn flush(&mut self) {
+        self.frame.wait();
+        if !self.frame.is_empty() {
+            self.frame
+                .flush_into(&mut lock_target(self.surface.0.as_ref()));
+        }
+    }
 }
 
 /// Objects shared between the contexts of one share group: texture and buffer objects.
@@ -203,7 +241,7 @@ pub struct Context {
     pub(super) textures: super::texture::TextureUnits,
     pub(super) buffers: super::buffer::BufferBindings,
     /// Work recorded for the draw surface and not yet rasterized.
-    pub(super) frame: Option<Frame>,
+    pub(super) frame: Option<Recording>,
     /// Framebuffer objects, bindings and the bound one's assembled target.
     pub(super) fbo: super::fbo::FramebufferState,
 }
@@ -320,34 +358,37 @@ impl Context {
 
     /// Rasterizes all recorded work into the surface it was recorded for.
     fn flush_frame(&mut self) {
-        let d = self.draw_surface();
-        if let (Some(frame), Some(d)) = (&mut self.frame, d) {
-            if !frame.is_empty() {
-                frame.flush_into(&mut lock_target(d.as_ref()));
-            }
+        if let Some(r) = &mut self.frame {
+            r.flush();
         }
     }
 
-    /// Runs `f` with the frame that records work for the draw surface (created to fit it)
-    /// and the surface's target, locked for the call so that a draw can rasterize whenever
-    /// the frame fills ([`gles_cm_core::record_into`]). A full frame is flushed first. `None`
-    /// without a draw surface.
+    /// Runs `f` with the frame that records work for the draw surface (created for it) and
+    /// where the frame goes when it fills during a draw ([`gles_cm_core::record_into`]). A
+    /// full frame is first handed to the workers, which rasterize it while this thread
+    /// records more; the target is not locked here, so that they can. `None` without a
+    /// draw surface.
     pub(super) fn with_frame<R>(
         &mut self,
-        f: impl FnOnce(&mut Frame, &mut Target) -> R,
+        f: impl FnOnce(&mut Frame, Destination<'_>) -> R,
     ) -> Option<R> {
         let surface = self.draw_surface()?;
         self.fbo.dirty |= self.fbo.bound != 0;
-        let mut target = lock_target(surface.as_ref());
-        let frame = match &mut self.frame {
-            Some(fr) if fr.fits(&target) => {
-                // Only rasterize: the caller may hold the share group's lock.
-                fr.flush_if_full(&mut target);
-                fr
-            }
-            slot => slot.insert(Frame::for_target(&target)),
-        };
-        Some(f(frame, &mut target))
+        if !self.frame.as_ref().is_some_and(|r| r.is_for(&surface)) {
+            // Work recorded for another surface lands there first.
+            self.flush_frame();
+            let frame = Frame::for_target(&lock_target(surface.as_ref()));
+            self.frame = Some(Recording {
+                frame,
+                surface: Arc::new(SurfaceTarget(surface)),
+            });
+        }
+        let r = self.frame.as_mut()?;
+        let shared: Arc<dyn SharedTarget> = r.surface.clone();
+        if r.frame.is_full() {
+            r.frame.flush_behind(shared.clone());
+        }
+        Some(f(&mut r.frame, Destination::Behind(shared)))
     }
 
     /// The format of what draws go to (the bound framebuffer object or the draw surface).

@@ -135,7 +135,7 @@ impl Context {
             }
         }
         if let Some(Err(_)) =
-            self.with_frame(|frame, target| gles_cm_core::record_into(&rs, &call, frame, target))
+            self.with_frame(|frame, to| gles_cm_core::record_into(&rs, &call, frame, to))
         {
             self.set_error(GL_OUT_OF_MEMORY);
         }

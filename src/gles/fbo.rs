@@ -460,6 +460,11 @@ impl Context {
     pub(super) fn current_draw_format(&self) -> Option<TargetFormat> {
         if self.fbo.bound == 0 {
             let d = self.draw.as_ref()?;
+            // Known without the target's lock, which workers may hold, when a frame
+            // records for it.
+            if let Some(f) = self.frame.as_ref().and_then(|r| r.format_for(d)) {
+                return Some(f);
+            }
             return Some(super::context::lock_target(d.as_ref()).format());
         }
         let fb = self.fbo.names.get(self.fbo.bound)?;

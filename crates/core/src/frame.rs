@@ -7,13 +7,20 @@
 //! threads; one thread owns a band and replays its commands in submission order, so the
 //! pixels never depend on the thread count. Bands are whole rows, so each is one contiguous
 //! slice of every buffer and needs no locking.
+//!
+//! A frame that fills in the middle of the work can be rasterized *behind* the caller
+//! ([`Frame::flush_behind`]): the workers replay it into a [`SharedTarget`] while the caller
+//! transforms, sets up and bins the next primitives into the same (now empty) frame. Only
+//! one batch is behind at a time, and every flush waits for it first, so batches land in
+//! the order they were recorded.
 
-use std::sync::Mutex;
+use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 
 use super::fragment::FragmentKey;
-use super::pool::{thread_count, together};
+use super::pool::{self, thread_count, together, Spread};
 use super::raster::Prim;
-use super::target::{BandMut, Rect, Target, TargetFormat};
+use super::target::{BandMut, Rect, SharedTarget, Target, TargetFormat};
 
 /// Rows per band: small enough that several bands per thread balance the load, large
 /// enough that a triangle's setup is shared by many rows.
@@ -48,6 +55,23 @@ pub struct Frame {
     /// For a multisampled target, one frame per sample plane ([`super::multisample`]):
     /// primitives are recorded there, and this frame only forwards.
     planes: Vec<Frame>,
+    /// The batch the workers are rasterizing ([`Frame::flush_behind`]).
+    behind: Option<Arc<Behind>>,
+    /// The frame of the last finished batch, emptied, to record into after the next
+    /// handover (its lists keep their capacity).
+    spare: Option<Box<Frame>>,
+}
+
+/// A batch handed to the workers: its frame comes back here, emptied, when it has been
+/// rasterized (or the panic that stopped it).
+#[derive(Default)]
+struct Behind {
+    done: Mutex<Option<std::thread::Result<Box<Frame>>>>,
+    ready: Condvar,
+}
+
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 impl Frame {
@@ -63,6 +87,8 @@ impl Frame {
             bands: vec![Vec::new(); height.div_ceil(BAND_ROWS) as usize],
             pending: 0,
             planes: Vec::new(),
+            behind: None,
+            spare: None,
         }
     }
 
@@ -184,6 +210,7 @@ impl Frame {
     /// [`Frame::flush_into`] on exactly `threads` threads: what the tests of thread-count
     /// invariance and the benchmarks at a given count need.
     pub fn flush(&mut self, target: &mut Target, threads: usize) {
+        self.wait();
         if self.is_empty() {
             return;
         }
@@ -197,11 +224,79 @@ impl Frame {
             target.resolve();
             return;
         }
-        let this = &*self;
+        self.rasterize(target, threads, &|n, work| together(n, work));
+        self.clear();
+    }
+
+    /// Hands what is recorded to the workers, which rasterize it into `target` while the
+    /// caller records more into this frame (emptied at once), on the library's threads
+    /// ([`thread_count`]). With one thread, or for a multisampled target, it is
+    /// [`Frame::flush_into`].
+    ///
+    /// The batch handed over before is waited for first, and so it is by every flush and
+    /// by [`Frame::wait`]: the caller must not hold `target`'s lock when it calls them.
+    pub fn flush_behind(&mut self, target: Arc<dyn SharedTarget>) {
+        self.flush_behind_on(target, thread_count());
+    }
+
+    /// [`Frame::flush_behind`] on exactly `threads` worker threads.
+    pub fn flush_behind_on(&mut self, target: Arc<dyn SharedTarget>, threads: usize) {
+        self.wait();
+        if self.is_empty() {
+            return;
+        }
+        if threads <= 1 || !self.planes.is_empty() {
+            return self.flush(&mut lock(target.target()), threads);
+        }
+        let empty = match self.spare.take() {
+            Some(frame) => *frame,
+            None => Frame::new(self.width, self.height, self.format),
+        };
+        let mut full = std::mem::replace(self, empty);
+        let behind = Arc::new(Behind::default());
+        let signal = behind.clone();
+        let job = move |spread: Spread<'_>| {
+            let result = catch_unwind(AssertUnwindSafe(|| {
+                full.rasterize(&mut lock(target.target()), threads, spread);
+                full.clear();
+                Box::new(full)
+            }));
+            *lock(&signal.done) = Some(result);
+            signal.ready.notify_all();
+        };
+        if let Err(job) = pool::behind(threads, job) {
+            job(&|_, work| work());
+        }
+        self.behind = Some(behind);
+    }
+
+    /// True while a batch handed to the workers ([`Frame::flush_behind`]) is still being
+    /// rasterized.
+    pub fn rasterizing(&self) -> bool {
+        self.behind
+            .as_ref()
+            .is_some_and(|b| lock(&b.done).is_none())
+    }
+
+    /// Returns when the batch handed to the workers ([`Frame::flush_behind`]) is in its
+    /// target. A panic that stopped it is raised again here, on the caller's thread.
+    pub fn wait(&mut self) {
+        if let Some(behind) = self.behind.take() {
+            match behind.finished() {
+                Ok(frame) => self.spare = Some(frame),
+                Err(panic) => resume_unwind(panic),
+            }
+        }
+    }
+
+    /// Replays every band with commands into `target` on up to `threads` threads, which
+    /// `spread` runs; each band is replayed whole by whichever thread takes it, so the
+    /// pixels do not depend on the scheduling.
+    fn rasterize(&self, target: &mut Target, threads: usize, spread: Spread<'_>) {
         let mut bands: Vec<(BandMut<'_>, &[Command])> = target
             .bands_mut(BAND_ROWS)
             .into_iter()
-            .zip(this.bands.iter().map(Vec::as_slice))
+            .zip(self.bands.iter().map(Vec::as_slice))
             .filter(|(_, cmds)| !cmds.is_empty())
             .collect();
         // Starting a thread costs tens of microseconds: below a few primitives per band it
@@ -212,14 +307,16 @@ impl Frame {
         } else {
             threads.clamp(1, bands.len().max(1))
         };
-        // Each band is replayed whole by whichever thread takes it, so the pixels do not
-        // depend on the scheduling.
         let queue = Mutex::new(bands.iter_mut());
-        together(threads, || loop {
-            let next = queue.lock().unwrap_or_else(|e| e.into_inner()).next();
+        spread(threads, &|| loop {
+            let next = lock(&queue).next();
             let Some((band, cmds)) = next else { break };
-            this.replay(band, cmds);
+            self.replay(band, cmds);
         });
+    }
+
+    /// Forgets what was recorded, keeping the lists' capacity.
+    fn clear(&mut self) {
         self.prims.clear();
         self.prim_keys.clear();
         self.keys.clear();
@@ -243,6 +340,30 @@ impl Frame {
                     band.clear_stencil(rect, value, mask)
                 }
             }
+        }
+    }
+}
+
+impl Behind {
+    /// Blocks until the workers are done with the batch.
+    fn finished(&self) -> std::thread::Result<Box<Frame>> {
+        let mut done = lock(&self.done);
+        loop {
+            match done.take() {
+                Some(result) => return result,
+                None => done = self.ready.wait(done).unwrap_or_else(|e| e.into_inner()),
+            }
+        }
+    }
+}
+
+impl Drop for Frame {
+    /// A batch still behind finishes before the frame goes, so its target holds everything
+    /// that was handed over. A panic that stopped it is not raised again here (that could
+    /// abort while unwinding); the worker's panic message has reported it.
+    fn drop(&mut self) {
+        if let Some(behind) = self.behind.take() {
+            let _ = behind.finished();
         }
     }
 }

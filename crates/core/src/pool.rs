@@ -1,6 +1,7 @@
 //! The library's worker threads: how many ([`thread_count`]), the persistent pools that
-//! hold them ([`pool`]), and running one job on the caller and the workers at once
-//! ([`together`]). Flushing a [`super::Frame`] and setting up the pieces of a long draw
+//! hold them ([`pool`]), running one job on the caller and the workers at once
+//! ([`together`]), and handing a job to the workers while the caller goes on ([`behind`]).
+//! Flushing a [`super::Frame`] and setting up the pieces of a long draw
 //! ([`super::record_into`]) use them; neither lets the pixels depend on how many there are.
 
 use std::sync::{Arc, Mutex, OnceLock};
@@ -34,6 +35,38 @@ pub fn together(threads: usize, work: impl Fn() + Sync) {
         }),
         None => work(),
     }
+}
+
+/// What [`behind`] hands its job: runs a function on `n` (at most the pool's size) of the
+/// pool's workers at once, the calling worker among them, and returns when all have.
+pub type Spread<'a> = &'a dyn Fn(usize, &(dyn Fn() + Sync));
+
+/// Hands `job` to the pool of `threads` workers and returns at once: the caller goes on
+/// while the workers run it, all `threads` of them when `job` spreads its work. Jobs
+/// handed over are not ordered among themselves; a caller that needs order waits for one
+/// before handing over the next. `Err(job)` when threads cannot be started.
+///
+/// These are `threads` workers beside the caller, not `threads − 1` as in [`together`]:
+/// the caller is busy with other work (recording the next frame) while they run.
+pub fn behind<J>(threads: usize, job: J) -> Result<(), J>
+where
+    J: FnOnce(Spread<'_>) + Send + 'static,
+{
+    let Some(p) = pool(threads) else {
+        return Err(job);
+    };
+    let own = p.clone();
+    p.spawn(move || {
+        job(&|n, work| {
+            own.in_place_scope(|s| {
+                for _ in 1..n.min(threads) {
+                    s.spawn(|_| work());
+                }
+                work();
+            })
+        })
+    });
+    Ok(())
 }
 
 /// The persistent workers for `threads` threads (built on first use per count and kept, so

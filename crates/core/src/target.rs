@@ -179,6 +179,19 @@ pub struct Target {
     samples: Vec<Target>,
 }
 
+/// A target that lives behind a lock beyond one call (an EGL surface's, a framebuffer
+/// object's): the workers lock it to rasterize a frame while its owner records the next
+/// ([`super::Frame::flush_behind`]).
+pub trait SharedTarget: Send + Sync {
+    fn target(&self) -> &std::sync::Mutex<Target>;
+}
+
+impl SharedTarget for std::sync::Mutex<Target> {
+    fn target(&self) -> &std::sync::Mutex<Target> {
+        self
+    }
+}
+
 /// Channel write mask for color clears and fragment writes.
 pub type ColorMask = [bool; 4];
 

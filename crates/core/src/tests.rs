@@ -385,6 +385,69 @@ fn pixels_do_not_depend_on_the_thread_count() {
     );
 }
 
+/// Frames handed to the workers while recording goes on (what a GL context does whenever
+/// its frame fills) land in recording order, for any worker count, whether the last batch
+/// is waited for or the frame is dropped with it still behind. Without a depth test each
+/// pixel shows the last triangle over it, so a batch landing early or late changes the
+/// image. 40 draws of 300 triangles fill the frame (4096 primitives) twice over.
+#[test]
+fn batches_flushed_behind_land_in_recording_order() {
+    let (w, h) = (80, 70);
+    let s = pixel_state(w, h);
+    let mut rng = Lcg(5);
+    let draws: Vec<(Vec<u8>, Vec<u8>)> = (0..40)
+        .map(|_| {
+            let pos: Vec<f32> = (0..2700)
+                .map(|i| match i % 3 {
+                    0 => rng.next() * 100.0 - 10.0,
+                    1 => rng.next() * 90.0 - 10.0,
+                    _ => 0.0,
+                })
+                .collect();
+            let col: Vec<f32> = (0..3600).map(|_| rng.next()).collect();
+            (bytes(&pos), bytes(&col))
+        })
+        .collect();
+    let calls: Vec<DrawCall<'_>> = draws
+        .iter()
+        .map(|(p, c)| colored_call(Primitive::Triangles, p, c, 900))
+        .collect();
+    let mut expected = target(w as u32, h as u32);
+    let mut frame = Frame::for_target(&expected);
+    for call in &calls {
+        record(&s, call, &mut frame).unwrap();
+    }
+    frame.flush(&mut expected, 1);
+    for threads in [2, 3, 8] {
+        for drop_last in [false, true] {
+            let shared = Arc::new(Mutex::new(target(w as u32, h as u32)));
+            let to = || shared.clone() as Arc<dyn SharedTarget>;
+            let mut frame = Frame::for_target(&shared.lock().unwrap());
+            let mut handed = 0;
+            for call in &calls {
+                if frame.is_full() {
+                    frame.flush_behind_on(to(), threads);
+                    handed += 1;
+                }
+                record(&s, call, &mut frame).unwrap();
+            }
+            frame.flush_behind_on(to(), threads);
+            if drop_last {
+                drop(frame);
+            } else {
+                frame.wait();
+            }
+            assert!(handed >= 2, "the frame filled {handed} times");
+            let got = shared.lock().unwrap();
+            assert!(
+                got.color() == expected.color(),
+                "{threads} threads, last batch {}",
+                if drop_last { "dropped" } else { "waited for" }
+            );
+        }
+    }
+}
+
 /// Random triangles with vertices on the 1/256-pixel grid and inside the viewport, so
 /// nothing is clipped, snapping is exact and the fast path covers exactly the reference's
 /// pixels; colors are random, alpha included.

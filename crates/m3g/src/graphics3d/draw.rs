@@ -13,7 +13,7 @@ use gles_cm_core::state::{Light as CoreLight, Lighting};
 use gles_cm_core::texenv::TextureUnit;
 use gles_cm_core::texture::{BaseFormat, Image as TexImage, MagFilter, MinFilter, Sampler, Wrap};
 use gles_cm_core::{
-    AttribArray, AttribSource, DrawCall, Indices, Primitive, RenderState, Viewport,
+    AttribArray, AttribSource, Destination, DrawCall, Indices, Primitive, RenderState, Viewport,
 };
 
 use super::collect::{outside_frustum, Item, What};
@@ -476,7 +476,7 @@ fn draw_submesh(
         stats.vertices_transformed += (hi - lo + 1) as u64;
     }
     // Out of memory drops the draw (M3G has no such exception).
-    let _ = gles_cm_core::record_into(s, &call, &mut b.frame, &mut b.target);
+    let _ = gles_cm_core::record_into(s, &call, &mut b.frame, Destination::Now(&mut b.target));
 }
 
 fn component_type(size: i32) -> gles_cm_core::ComponentType {

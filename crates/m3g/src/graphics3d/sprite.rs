@@ -8,7 +8,8 @@ use glam::{Mat4, Vec4};
 use gles_cm_core::texenv::{TexEnv, TextureUnit};
 use gles_cm_core::texture::{MagFilter, MinFilter, Wrap};
 use gles_cm_core::{
-    AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive, RenderState, ShadeModel,
+    AttribArray, AttribSource, ComponentType, Destination, DrawCall, Indices, Primitive,
+    RenderState, ShadeModel,
 };
 
 use super::draw::TexCache;
@@ -184,7 +185,7 @@ pub(super) fn draw_sprite(
     call.color = AttribSource::Constant([1.0, 1.0, 1.0, alpha]);
     call.texcoord[0] = AttribSource::Array(floats(&tb, 2));
     // Out of memory drops the draw (M3G has no such exception).
-    let _ = gles_cm_core::record_into(&s, &call, &mut b.frame, &mut b.target);
+    let _ = gles_cm_core::record_into(&s, &call, &mut b.frame, Destination::Now(&mut b.target));
 }
 
 #[cfg(test)]
@@ -271,7 +272,7 @@ mod tests {
             floats(&pb, 3),
         );
         call.color = AttribSource::Array(floats(&cb, 4));
-        let _ = gles_cm_core::record_into(&s, &call, &mut b.frame, &mut b.target);
+        let _ = gles_cm_core::record_into(&s, &call, &mut b.frame, Destination::Now(&mut b.target));
     }
 
     fn bound(format: ColorFormat, dither: bool) -> Bound {

@@ -14,7 +14,9 @@
 //! `--frames N` sets the timed frames per renderer, `--diff` writes difference images and
 //! `--markdown FILE` writes the whole report (machine, tables, targets) as Markdown.
 //! `--msaa` measures only our library, on single-sample and 4-sample pbuffers
-//! (`EGL_SAMPLES` 4), and adds a table of 4× MSAA's cost per scene.
+//! (`EGL_SAMPLES` 4), and adds a table of 4× MSAA's cost per scene. `--threads 1,2,4,8`
+//! measures our library (DONT_CARE) and llvmpipe at each of those thread counts and adds a
+//! table of how each scales.
 //! Internally `bench --child ours|mesa|m3g …` is the measuring process (`bench/worker.rs`).
 //! `bench/scene.rs` and `bench/child.rs` hold the earlier three-scene benchmark, which the
 //! `accuracy` report still builds on.
@@ -71,12 +73,8 @@ struct Renderer {
 }
 
 impl Renderer {
-    fn label(&self, all: usize) -> String {
-        let t = if self.threads == 1 {
-            "1t".to_owned()
-        } else {
-            format!("{all}t")
-        };
+    fn label(&self) -> String {
+        let t = format!("{}t", self.threads);
         match self.kind {
             Kind::Ours if self.samples > 0 => format!("ours {t} msaa{}", self.samples),
             Kind::Ours => format!("ours {t}"),
@@ -102,10 +100,24 @@ impl Renderer {
     }
 }
 
-fn renderers(class: Class, m3g: bool, all: usize, msaa: bool) -> Vec<Renderer> {
+fn renderers(class: Class, m3g: bool, all: usize, msaa: bool, counts: &[usize]) -> Vec<Renderer> {
     let mut threads = vec![1, all];
     threads.dedup();
     let mut out = Vec::new();
+    if !counts.is_empty() {
+        // Our library (DONT_CARE) and llvmpipe at each requested thread count.
+        for kind in [Kind::Ours, Kind::Llvmpipe] {
+            for &t in counts {
+                out.push(Renderer {
+                    kind,
+                    threads: t,
+                    mode: (kind == Kind::Ours).then_some(Mode::DontCare),
+                    samples: 0,
+                });
+            }
+        }
+        return out;
+    }
     if msaa {
         // Our library only, DONT_CARE, single-sample beside 4× MSAA.
         for &t in &threads {
@@ -326,6 +338,8 @@ struct Ctx {
     diff: bool,
     /// `--msaa`: our library only, single-sample beside 4× MSAA.
     msaa: bool,
+    /// `--threads`: the thread counts to measure ours and llvmpipe at (empty: 1 and all).
+    counts: Vec<usize>,
     all: usize,
 }
 
@@ -363,9 +377,9 @@ fn command(ctx: &Ctx, scene: &str, r: &Renderer) -> Command {
         }
         Kind::Llvmpipe => {
             cmd.env("GALLIUM_DRIVER", "llvmpipe");
-            if r.threads == 1 {
-                cmd.env("LP_NUM_THREADS", "0");
-            }
+            // 0: rasterize on the calling thread, as ours does with one thread.
+            let n = if r.threads == 1 { 0 } else { r.threads };
+            cmd.env("LP_NUM_THREADS", n.to_string());
         }
         Kind::Softpipe => {
             cmd.env("GALLIUM_DRIVER", "softpipe");
@@ -386,7 +400,7 @@ fn median(v: &[f64]) -> Option<f64> {
 /// Measures every renderer of one scene, interleaved, and compares each image with
 /// `reference`.
 fn run_scene(ctx: &Ctx, name: &str, class: Class, memset: bool, reference: &Target) -> Vec<Row> {
-    let list = renderers(class, is_m3g(name), ctx.all, ctx.msaa);
+    let list = renderers(class, is_m3g(name), ctx.all, ctx.msaa, &ctx.counts);
     let mut children: Vec<Option<Child>> = Vec::new();
     let mut failures: Vec<Option<Outcome>> = Vec::new();
     for r in &list {
@@ -421,6 +435,12 @@ fn run_scene(ctx: &Ctx, name: &str, class: Class, memset: bool, reference: &Targ
             let spent: f64 = c.times.iter().sum();
             if c.times.len() >= 3 && spent > BUDGET.as_secs_f64() * 1e3 {
                 continue;
+            }
+            // Several threads: an untimed frame first, so that the timed one starts with
+            // warm workers (asleep, they take milliseconds to wake on this kind of VM
+            // while the other renderers run), for ours and llvmpipe alike.
+            if list[(k + round) % n].threads > 1 {
+                c.ask_ms("frame", "t ");
             }
             if let Some(t) = c.ask_ms("frame", "t ") {
                 c.times.push(t);
@@ -648,6 +668,7 @@ fn main() -> ExitCode {
     let mut markdown: Option<PathBuf> = None;
     let mut diff = false;
     let mut msaa = false;
+    let mut counts: Vec<usize> = Vec::new();
     let mut it = args.iter().skip(1);
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -666,9 +687,23 @@ fn main() -> ExitCode {
             "--markdown" => markdown = it.next().map(PathBuf::from),
             "--diff" => diff = true,
             "--msaa" => msaa = true,
+            "--threads" => {
+                let list: Option<Vec<usize>> = it.next().and_then(|v| {
+                    v.split(',')
+                        .map(|n| n.trim().parse().ok().filter(|&n: &usize| n >= 1))
+                        .collect()
+                });
+                match list {
+                    Some(l) if !l.is_empty() => counts = l,
+                    _ => {
+                        eprintln!("--threads needs a comma list of positive numbers");
+                        return ExitCode::from(2);
+                    }
+                }
+            }
             "--help" | "-h" => {
                 println!(
-                    "usage: bench [--scene NAME[,NAME…]]… [--frames N] [--diff] [--msaa] [--markdown FILE]\n\
+                    "usage: bench [--scene NAME[,NAME…]]… [--frames N] [--diff] [--msaa] [--threads N,N…] [--markdown FILE]\n\
                      scenes: {} {M3G} {M3G_CORPUS}",
                     NAMES.join(" ")
                 );
@@ -727,6 +762,7 @@ fn main() -> ExitCode {
         frames,
         diff,
         msaa,
+        counts,
         all: std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
     let wanted = |name: &str| {
@@ -754,8 +790,13 @@ fn main() -> ExitCode {
             .map_or(scenes.len(), |i| i + 1),
         M3G_CORPUS.to_owned(),
     );
-    // The M3G scenes render through Graphics3D, which has no multisampled targets.
-    for name in scenes.iter().filter(|n| wanted(n) && !(msaa && is_m3g(n))) {
+    // The M3G scenes render through Graphics3D, which has no multisampled targets and no
+    // peer to compare thread counts with.
+    let skip_m3g = msaa || !ctx.counts.is_empty();
+    for name in scenes
+        .iter()
+        .filter(|n| wanted(n) && !(skip_m3g && is_m3g(n)))
+    {
         let t0 = Instant::now();
         let (reference, class, memset, summary) = if name == M3G_CORPUS {
             match worker::corpus_files(&ctx.corpus).and_then(|files| {
@@ -849,6 +890,9 @@ fn main() -> ExitCode {
     if msaa {
         print!("{}", msaa_table(&rows, ctx.all).text());
     }
+    if !ctx.counts.is_empty() {
+        print!("{}", threads_table(&rows, &ctx.counts, ctx.all).text());
+    }
     println!();
     for line in report.notes() {
         println!("{line}");
@@ -890,6 +934,53 @@ fn msaa_table(rows: &[Row], all: usize) -> Table {
             ms(r.ms()),
             fmt_ratio(r.ms(), one),
         ]);
+    }
+    t
+}
+
+/// Each scene at each thread count: ours and llvmpipe's medians and each one's speed-up
+/// over its own single thread.
+fn threads_table(rows: &[Row], counts: &[usize], all: usize) -> Table {
+    let title = format!(
+        "Threads (ours DONT_CARE, llvmpipe; this machine has {all} cores, so more threads \
+         than that share them)"
+    );
+    let mut t = Table::new(
+        &title,
+        &[
+            "scene",
+            "threads",
+            "ours ms",
+            "ours speed-up",
+            "llvmpipe ms",
+            "llvmpipe speed-up",
+        ],
+        2,
+    );
+    let mut scenes: Vec<&str> = Vec::new();
+    for r in rows {
+        if !scenes.contains(&r.scene.as_str()) {
+            scenes.push(&r.scene);
+        }
+    }
+    let ms = |v: Option<f64>| v.map_or("-".to_owned(), |v| format!("{v:.2}"));
+    for scene in scenes {
+        let at = |kind: Kind, n: usize| {
+            rows.iter()
+                .find(|r| r.scene == scene && r.renderer.kind == kind && r.renderer.threads == n)
+                .and_then(Row::ms)
+        };
+        for &n in counts {
+            let (ours, peer) = (at(Kind::Ours, n), at(Kind::Llvmpipe, n));
+            t.rows.push(vec![
+                scene.to_owned(),
+                n.to_string(),
+                ms(ours),
+                fmt_ratio(at(Kind::Ours, 1), ours),
+                ms(peer),
+                fmt_ratio(at(Kind::Llvmpipe, 1), peer),
+            ]);
+        }
     }
     t
 }
@@ -959,7 +1050,7 @@ impl Report<'_> {
                 let r = &row.renderer;
                 let mut cells = vec![
                     name.to_owned(),
-                    r.label(self.all),
+                    r.label(),
                     r.mode.map_or("-".into(), |m| m.name().to_owned()),
                 ];
                 match &row.outcome {
@@ -994,7 +1085,7 @@ impl Report<'_> {
                         cells.extend(fmt_error(*error));
                     }
                     Outcome::Unavailable(why) => {
-                        eprintln!("{name} / {}: not installed ({why})", r.label(self.all));
+                        eprintln!("{name} / {}: not installed ({why})", r.label());
                         cells.push("not installed".into());
                         cells.extend(std::iter::repeat_n(String::new(), 7));
                     }
@@ -1146,7 +1237,7 @@ impl Report<'_> {
                     row.scene.clone(),
                     format!(
                         "{} {}",
-                        row.renderer.label(self.all),
+                        row.renderer.label(),
                         row.renderer.mode.map_or("", |m| m.name())
                     ),
                     format!("{median_ms:.3}"),
@@ -1228,7 +1319,7 @@ impl Report<'_> {
                     let pct = m / median_ms * 100.0;
                     Some(format!(
                         "{}: {pct:.0} % of memset ({})",
-                        r.renderer.label(self.all),
+                        r.renderer.label(),
                         if pct >= 70.0 { "met" } else { "NOT met" }
                     ))
                 }
@@ -1258,7 +1349,7 @@ impl Report<'_> {
         let mut seen: Vec<String> = Vec::new();
         for r in self.rows {
             if let Outcome::Measured { renderer, .. } = &r.outcome {
-                let family = r.renderer.label(self.all);
+                let family = r.renderer.label();
                 let family = family.split(' ').next().unwrap_or("");
                 let line = format!("- GL_RENDERER | GL_VERSION of {family}: {renderer}");
                 if !seen.contains(&line) && !is_m3g(&r.scene) {
@@ -1277,7 +1368,9 @@ impl Report<'_> {
             .collect();
         v.push(format!(
             "- Median of up to {} frames per row (at least {} were timed for every row) after \
-             one warm-up frame, each glClear + the scene + glFinish, renderers interleaved \
+             one warm-up frame (multi-threaded rows: one untimed frame before each timed \
+             one, so both libraries' workers are warm), each glClear + the scene + glFinish, \
+             renderers interleaved \
              frame by frame; error columns against gles_cm_core::reference (M3G: the corpus image). \
              Images in {}. Total {:.0} s.",
             self.frames,
