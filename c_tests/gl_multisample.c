@@ -15,10 +15,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "common.h"
-
-#include <stdint.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "child_hash.h"
 
 #define W 16
 #define H 16
@@ -102,42 +99,19 @@ static void busy_scene(int w, int h)
     glDisable(GL_DEPTH_TEST);
 }
 
-/* FNV-1a of the busy scene on a 4-sample pbuffer, rendered in a child process whose library
- * starts with GLES_CM_THREADS = threads; 0 when anything fails. */
-static uint64_t child_hash(const char *threads)
+/* FNV-1a of the busy scene on a 4-sample pbuffer (run through ct_child_hash); 0 when
+ * anything fails. */
+static uint64_t busy_hash(void)
 {
-    int fds[2];
-    uint64_t hash = 0;
-    pid_t pid;
-    if (pipe(fds) != 0)
+    static GLubyte px[64 * 64 * 4];
+    GLint samples = 0;
+    ct_init_config(64, 64, ms_attribs);
+    glGetIntegerv(GL_SAMPLES, &samples);
+    busy_scene(64, 64);
+    glReadPixels(0, 0, 64, 64, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    if (samples != 4 || glGetError() != GL_NO_ERROR)
         return 0;
-    pid = fork();
-    if (pid == 0) {
-        static GLubyte px[64 * 64 * 4];
-        uint64_t h = 1469598103934665603ull;
-        size_t i;
-        GLint samples = 0;
-        setenv("GLES_CM_THREADS", threads, 1);
-        ct_init_config(64, 64, ms_attribs);
-        glGetIntegerv(GL_SAMPLES, &samples);
-        busy_scene(64, 64);
-        glReadPixels(0, 0, 64, 64, GL_RGBA, GL_UNSIGNED_BYTE, px);
-        for (i = 0; i < sizeof px; ++i)
-            h = (h ^ px[i]) * 1099511628211ull;
-        if (samples != 4 || glGetError() != GL_NO_ERROR)
-            h = 0;
-        if (write(fds[1], &h, sizeof h) != (ssize_t)sizeof h)
-            _exit(1);
-        _exit(0);
-    }
-    close(fds[1]);
-    if (pid > 0) {
-        if (read(fds[0], &hash, sizeof hash) != (ssize_t)sizeof hash)
-            hash = 0;
-        waitpid(pid, NULL, 0);
-    }
-    close(fds[0]);
-    return hash;
+    return ct_fnv1a(1469598103934665603ull, px, sizeof px);
 }
 
 static void configs(void)
@@ -368,7 +342,8 @@ int main(void)
 {
     /* Before anything starts the library in this process: children with their own
      * thread counts. */
-    uint64_t h1 = child_hash("1"), h2 = child_hash("2"), h4 = child_hash("4");
+    uint64_t h1 = ct_child_hash("1", busy_hash), h2 = ct_child_hash("2", busy_hash),
+             h4 = ct_child_hash("4", busy_hash);
     GLint sb = -1, sm = -1;
     CHECK(h1 != 0 && h1 == h2 && h1 == h4);
 

@@ -957,14 +957,8 @@ fn threads_table(rows: &[Row], counts: &[usize], all: usize) -> Table {
         ],
         2,
     );
-    let mut scenes: Vec<&str> = Vec::new();
-    for r in rows {
-        if !scenes.contains(&r.scene.as_str()) {
-            scenes.push(&r.scene);
-        }
-    }
     let ms = |v: Option<f64>| v.map_or("-".to_owned(), |v| format!("{v:.2}"));
-    for scene in scenes {
+    for scene in scenes_of(rows) {
         let at = |kind: Kind, n: usize| {
             rows.iter()
                 .find(|r| r.scene == scene && r.renderer.kind == kind && r.renderer.threads == n)
@@ -985,6 +979,17 @@ fn threads_table(rows: &[Row], counts: &[usize], all: usize) -> Table {
     t
 }
 
+/// The scenes of `rows`, each once, in the order they were run.
+fn scenes_of(rows: &[Row]) -> Vec<&str> {
+    let mut v: Vec<&str> = Vec::new();
+    for r in rows {
+        if !v.contains(&r.scene.as_str()) {
+            v.push(&r.scene);
+        }
+    }
+    v
+}
+
 fn is_fill(name: &str) -> bool {
     ["clear-", "flat-", "smooth-", "texture-"]
         .iter()
@@ -1002,16 +1007,6 @@ struct Report<'a> {
 }
 
 impl Report<'_> {
-    fn scenes(&self) -> Vec<&str> {
-        let mut v: Vec<&str> = Vec::new();
-        for r in self.rows {
-            if !v.contains(&r.scene.as_str()) {
-                v.push(&r.scene);
-            }
-        }
-        v
-    }
-
     fn tables(&self) -> Vec<Table> {
         let mut out = Vec::new();
         let mut main = Table::new(
@@ -1043,7 +1038,7 @@ impl Report<'_> {
             ],
             2,
         );
-        for name in self.scenes() {
+        for name in scenes_of(self.rows) {
             let scene = Scene::by_name(name);
             let class = scene.as_ref().map_or(Class::Main, |s| s.class);
             for row in self.rows.iter().filter(|r| r.scene == name) {
@@ -1271,7 +1266,7 @@ impl Report<'_> {
             Some(false) => format!("NOT met ({what})"),
             None => format!("n/a ({what})"),
         };
-        for name in self.scenes() {
+        for name in scenes_of(self.rows) {
             let class = Scene::by_name(name).map_or(Class::Main, |s| s.class);
             if class != Class::Main {
                 continue;
