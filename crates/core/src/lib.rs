@@ -250,7 +250,12 @@ fn set_up(
         let vp = state.viewport;
         let bounds = bounds.intersect(Rect::new(vp.x, vp.y, vp.width, vp.height));
         prim.for_each_triangle(&draw.indices, |a, b, c| {
-            let (a, b, c) = (vertices.get(a), vertices.get(b), vertices.get(c));
+            let (a, b, c) = (vertices.slot(a), vertices.slot(b), vertices.slot(c));
+            // Most triangles outside the view end here, from three bytes.
+            if vertices.rejects(a, b, c) {
+                return;
+            }
+            let (a, b, c) = (vertices.at(a), vertices.at(b), vertices.at(c));
             clip::triangle(a, b, c, |poly| {
                 // The clipped polygon is convex: fan it out from its first vertex.
                 for i in 1..poly.len() - 1 {

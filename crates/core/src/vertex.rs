@@ -457,6 +457,24 @@ pub fn all_finite<const N: usize>(ps: [Vec4; N]) -> bool {
     zero.cmpeq(Vec4::ZERO).all()
 }
 
+/// A code bit of `reject_code`: a coordinate is infinite or NaN.
+const NOT_FINITE: u8 = 1 << 4;
+
+/// What [`rejects`] reads of one clip position, as a byte: its [`frustum_code`] and
+/// [`NOT_FINITE`]. The vertex stage keeps one per vertex, computed eight at a time (the
+/// tests hold it to this one-position statement), so a triangle outside the view is
+/// dropped from three bytes, before its vertices are read.
+#[cfg(test)]
+fn reject_code(p: Vec4) -> u8 {
+    frustum_code(p) as u8 | if all_finite([p]) { 0 } else { NOT_FINITE }
+}
+
+/// [`rejects`] from the three vertices' `reject_code`s.
+#[inline]
+fn rejects_codes(a: u8, b: u8, c: u8) -> bool {
+    (a | b | c) & NOT_FINITE != 0 || a & b & c != 0
+}
+
 /// Whether clipping drops the triangle with clip positions (a, b, c) from the positions
 /// alone, before any clipping: [`clip::triangle`](super::clip::triangle) asks this first,
 /// and the deferred lighting lights no vertex of such a triangle.
@@ -483,6 +501,8 @@ pub struct Vertices {
     /// `layout.stride` floats per vertex, then padding to make the last vertex's view a
     /// whole [`Floats`].
     data: Vec<f32>,
+    /// Each vertex's `reject_code`.
+    codes: Vec<u8>,
     layout: Layout,
     map: VertexMap,
 }
@@ -498,10 +518,28 @@ impl Vertices {
     /// Vertex number `i` (one the draw uses).
     #[inline]
     pub fn get(&self, i: usize) -> VertexRef<'_> {
-        let k = match &self.map {
+        self.at(self.slot(i))
+    }
+
+    /// Where vertex number `i` (one the draw uses) is kept, for [`Vertices::at`].
+    #[inline]
+    pub fn slot(&self, i: usize) -> usize {
+        match &self.map {
             VertexMap::Dense { base } => i - base,
             VertexMap::Sparse { keys } => keys.binary_search(&i).expect("vertex of this draw"),
-        };
+        }
+    }
+
+    /// [`rejects`] of the triangle of the vertices in slots `a`, `b` and `c`, from their
+    /// codes alone.
+    #[inline]
+    pub fn rejects(&self, a: usize, b: usize, c: usize) -> bool {
+        rejects_codes(self.codes[a], self.codes[b], self.codes[c])
+    }
+
+    /// The vertex in slot `k` ([`Vertices::slot`]).
+    #[inline]
+    pub fn at(&self, k: usize) -> VertexRef<'_> {
         let at = k * self.layout.stride;
         let floats = self.data[at..at + MAX_STRIDE]
             .try_into()
@@ -524,9 +562,11 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     let stage = transform::Stage::new(state, draw);
     let layout = stage.layout;
     let mut data = Vec::new();
+    let mut codes = Vec::new();
     let Some((lo, hi)) = draw.indices.range() else {
         return Ok(Vertices {
             data,
+            codes,
             layout,
             map: VertexMap::Dense { base: 0 },
         });
@@ -537,15 +577,17 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
             .checked_mul(layout.stride)
             .and_then(|f| f.checked_add(MAX_STRIDE))
             .ok_or(OutOfMemory)?;
-        data.try_reserve_exact(floats).map_err(|_| OutOfMemory)
+        data.try_reserve_exact(floats).map_err(|_| OutOfMemory)?;
+        codes.try_reserve_exact(count).map_err(|_| OutOfMemory)
     };
     let span = hi - lo + 1;
     let n = draw.indices.len();
     if matches!(draw.indices, Indices::Range { .. }) || span <= n.saturating_mul(2) {
         reserve(span)?;
-        fill(&mut data, &stage, lo..=hi, span);
+        fill(&mut data, &mut codes, &stage, lo..=hi, span);
         return Ok(Vertices {
             data,
+            codes,
             layout,
             map: VertexMap::Dense { base: lo },
         });
@@ -556,16 +598,23 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     keys.sort_unstable();
     keys.dedup();
     reserve(keys.len())?;
-    fill(&mut data, &stage, keys.iter().copied(), keys.len());
+    fill(
+        &mut data,
+        &mut codes,
+        &stage,
+        keys.iter().copied(),
+        keys.len(),
+    );
     Ok(Vertices {
         data,
+        codes,
         layout,
         map: VertexMap::Sparse { keys },
     })
 }
 
 /// Appends the `count` vertices `numbers` yields to `data` (which has the room), then the
-/// padding. Compiled also for AVX2 and SSE4.1 (the whole vertex computation is inlined
+/// padding, and their reject codes to `codes`. Compiled also for AVX2 and SSE4.1 (the whole vertex computation is inlined
 /// here) and chosen at run time.
 #[cfg_attr(
     not(fuzzing),
@@ -573,6 +622,7 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
 )]
 fn fill(
     data: &mut Vec<f32>,
+    codes: &mut Vec<u8>,
     stage: &transform::Stage<'_, '_>,
     numbers: impl Iterator<Item = usize>,
     count: usize,
@@ -595,8 +645,9 @@ fn fill(
             idx[k] = idx[0];
         }
         let out = &mut group[..used * stride];
-        stage.write_lanes(&idx, out, light_all);
+        let code = stage.write_lanes(&idx, out, light_all);
         data.extend_from_slice(out);
+        codes.extend(code[..used].iter().map(|&c| c as u8));
     }
     data.resize(data.len() + MAX_STRIDE, 0.0);
     let Some(d) = stage.deferred else {
@@ -605,18 +656,11 @@ fn fill(
     // The vertex numbers are the dense range first ..= first + count − 1; the vertices to
     // light are gathered into full groups.
     let vertices = &mut data[start..];
-    let pos = |v: &[f32], k: usize| Vec4::from_slice(&v[k * stride..k * stride + 4]);
     let mut idx = [0; LANES];
     let mut m = 0;
     for p in 0..count / d.step {
         let at = p * d.step;
-        if d.step == 3
-            && rejects(
-                pos(vertices, at),
-                pos(vertices, at + 1),
-                pos(vertices, at + 2),
-            )
-        {
+        if d.step == 3 && rejects_codes(codes[at], codes[at + 1], codes[at + 2]) {
             continue;
         }
         let from = if d.provoking_only { d.step - 1 } else { 0 };
@@ -757,6 +801,43 @@ mod tests {
             "second component outside"
         );
         assert_eq!(a(1).fetch(2), [5.0, 0.0, 0.0, 1.0]);
+    }
+
+    /// Coordinates where the frustum tests and the finiteness test change their answer.
+    const EDGES: [f32; 9] = [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        2.0,
+        -2.0,
+        f32::NAN,
+        f32::INFINITY,
+        -1e30,
+    ];
+
+    #[test]
+    fn reject_codes_decide_as_the_positions_do() {
+        // Positions on and around the planes x = ±w and y = ±w, with infinities and NaN.
+        let ps: Vec<Vec4> = EDGES
+            .iter()
+            .flat_map(|&x| EDGES.iter().map(move |&y| (x, y)))
+            .flat_map(|(x, y)| [1.0, -1.0, 2.0, f32::NAN].map(|w| Vec4::new(x, y, 0.5, w)))
+            .chain([Vec4::new(0.0, 0.0, f32::INFINITY, 1.0)])
+            .collect();
+        let (mut rejected, mut kept) = (0, 0);
+        for (i, &a) in ps.iter().enumerate() {
+            for &b in &ps[i % 7..] {
+                for &c in ps.iter().step_by(5) {
+                    let by_codes = rejects_codes(reject_code(a), reject_code(b), reject_code(c));
+                    assert_eq!(by_codes, rejects(a, b, c), "{a} {b} {c}");
+                    rejected += usize::from(by_codes);
+                    kept += usize::from(!by_codes);
+                }
+            }
+        }
+        // Both answers occur, so the comparison can fail either way.
+        assert!(rejected > 0 && kept > 0, "{rejected} rejected, {kept} kept");
     }
 
     #[test]

@@ -313,9 +313,9 @@ impl<'s, 'd> Stage<'s, 'd> {
     /// as `write` (the tests' one-vertex statement) would one by one and bit for bit
     /// alike, with positions, normals and colors as structures of arrays so transform,
     /// normalization and lighting vectorize across vertices. Only what the layout keeps
-    /// is computed.
+    /// is computed. Returns the vertices' `vertex::reject_code`s.
     #[inline(always)]
-    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [f32], light: bool) {
+    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [f32], light: bool) -> Lane<u32> {
         let layout = &self.layout;
         let stride = layout.stride;
         let mut p = [[0.0; LANES]; 4];
@@ -391,6 +391,7 @@ impl<'s, 'd> Stage<'s, 'd> {
                 }
             }
         }
+        reject_codes(&pos)
     }
 
     /// The eye positions of vertices `idx` at object positions `p`: the modelview's
@@ -613,6 +614,24 @@ fn store(out: &mut [f32], stride: usize, at: usize, a: &[Lane<f32>; 4]) {
             v.copy_from_slice(&[a[0][k], a[1][k], a[2][k], a[3][k]]);
         }
     }
+}
+
+/// `vertex::reject_code` of eight clip positions, the same comparisons
+/// lane by lane, in 32-bit lanes: written with bytes, or narrowed here, the loop compiled
+/// to scalar code (some 45 instructions a vertex, against 4).
+#[inline(always)]
+fn reject_codes(pos: &[Lane<f32>; 4]) -> Lane<u32> {
+    let mut codes = [0; LANES];
+    for j in 0..LANES {
+        let (x, y, z, w) = (pos[0][j], pos[1][j], pos[2][j], pos[3][j]);
+        let finite = x * 0.0 + y * 0.0 + z * 0.0 + w * 0.0 == 0.0;
+        codes[j] = u32::from(-x > w)
+            | u32::from(-y > w) << 1
+            | u32::from(x > w) << 2
+            | u32::from(y > w) << 3
+            | u32::from(!finite) << 4;
+    }
+    codes
 }
 
 /// The signed distance of eye position `eye` to user plane `plane`, kept finite and never
@@ -1278,6 +1297,39 @@ mod tests {
         assert_eq!(v.get(0).pos(), Vec4::new(0.5, 3.0, 0.0, 1.0));
         // Index 7 is past the palette: it contributes nothing.
         assert_eq!(v.get(1).pos(), Vec4::new(0.0, 4.0, 0.0, 1.0));
+    }
+
+    #[test]
+    fn reject_codes_in_lanes_match_one_position_at_a_time() {
+        let v = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            3.0,
+            f32::NAN,
+            f32::INFINITY,
+            -f32::INFINITY,
+        ];
+        let mut checked = 0;
+        for (i, &x) in v.iter().enumerate() {
+            for (j, &y) in v.iter().enumerate() {
+                // Eight positions: w and z run through the values against x and y.
+                let pos: [Lane<f32>; 4] = [
+                    [x; LANES],
+                    [y; LANES],
+                    std::array::from_fn(|k| v[(k + i) % LANES] * 0.5),
+                    std::array::from_fn(|k| v[(k + j + 3) % LANES]),
+                ];
+                let codes = reject_codes(&pos);
+                for k in 0..LANES {
+                    let p = Vec4::new(pos[0][k], pos[1][k], pos[2][k], pos[3][k]);
+                    assert_eq!(codes[k], u32::from(crate::vertex::reject_code(p)), "{p}");
+                    checked += usize::from(codes[k] != 0);
+                }
+            }
+        }
+        assert!(checked > 0);
     }
 
     #[test]
