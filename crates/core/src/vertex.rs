@@ -614,8 +614,8 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
 }
 
 /// Appends the `count` vertices `numbers` yields to `data` (which has the room), then the
-/// padding, and their reject codes to `codes`. Compiled also for AVX2 and SSE4.1 (the whole vertex computation is inlined
-/// here) and chosen at run time.
+/// padding, and their reject codes to `codes`. Compiled also for AVX2 and SSE4.1 (the
+/// whole vertex computation is inlined here) and chosen at run time.
 #[cfg_attr(
     not(fuzzing),
     multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
