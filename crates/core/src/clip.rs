@@ -17,16 +17,8 @@ use glam::Vec4;
 
 use super::vertex::{all_finite, lerp, rejects, Floats, Layout, VertexRef, MAX_STRIDE};
 
-/// The smallest w that survives clipping. A vertex at (0, 0, 0, 0) lies inside all six
-/// frustum planes, so this plane is what keeps 1/w finite.
-pub const W_MIN: f32 = 1e-30;
-
-/// The guard band's half-width in normalized device coordinates. Window coordinates then
-/// stay within (GUARD + 1) × MAX_VIEWPORT_DIM / 2 < 2¹⁶ pixels of the viewport, which keeps
-/// snapped coordinates below 2²⁴ and edge products far below 2⁶³.
-pub const GUARD: f32 = 8.0;
-
-pub use super::vertex::MAX_USER_PLANES;
+// Defined by the vertex stage, which codes every position against these planes.
+pub use super::vertex::{GUARD, MAX_USER_PLANES, W_MIN};
 
 /// Frustum planes (6) and the w plane.
 const FRUSTUM_PLANES: usize = 7;
@@ -302,7 +294,7 @@ fn clip_polygon(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::vertex::ClipVertex;
+    use crate::vertex::{reject_code, ClipVertex, CLIPS};
 
     fn v(x: f32, y: f32, z: f32, w: f32) -> [f32; 4] {
         [x, y, z, w]
@@ -375,7 +367,7 @@ mod tests {
             f32::INFINITY,
             0.5,
         ];
-        let mut n = 0;
+        let (mut n, mut checked) = (0, 0);
         for &x in &vals {
             for &y in &vals {
                 for &z in &vals[..6] {
@@ -393,12 +385,19 @@ mod tests {
                                 assert_eq!(code >> plane & 1 == 1, out, "{p:?} {plane}");
                             }
                             assert_eq!(code >> plane_count(&layout), 0);
+                            if user == 0 && p.pos.is_finite() {
+                                // The vertex stage's code says the same of a finite
+                                // position (the others are rejected before it is read).
+                                let clips = reject_code(p.pos) & CLIPS != 0;
+                                assert_eq!(clips, code != 0, "{p:?}");
+                                checked += 1;
+                            }
                         }
                     }
                 }
             }
         }
-        assert!(n > 1000);
+        assert!(n > 1000 && checked > 500, "{n} {checked}");
     }
 
     #[test]

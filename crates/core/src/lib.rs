@@ -250,24 +250,49 @@ fn set_up(
         let vp = state.viewport;
         let bounds = bounds.intersect(Rect::new(vp.x, vp.y, vp.width, vp.height));
         prim.for_each_triangle(&draw.indices, |a, b, c| {
-            let (a, b, c) = (vertices.slot(a), vertices.slot(b), vertices.slot(c));
+            let slots = [vertices.slot(a), vertices.slot(b), vertices.slot(c)];
             // Most triangles outside the view end here, from three bytes.
-            if vertices.rejects(a, b, c) {
-                return;
+            if !vertices.rejects(slots[0], slots[1], slots[2]) {
+                set_up_triangle(state, &vertices, slots, bounds, depth, emit);
             }
-            let (a, b, c) = (vertices.at(a), vertices.at(b), vertices.at(c));
-            clip::triangle(a, b, c, |poly| {
-                // The clipped polygon is convex: fan it out from its first vertex.
-                for i in 1..poly.len() - 1 {
-                    let tri = [poly[0], poly[i], poly[i + 1]];
-                    if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
-                        emit(raster::Prim::Triangle(t));
-                    }
-                }
-            });
         });
     }
     Ok(())
+}
+
+/// Clips (when a vertex may need it) and sets up the triangle of the vertices in `slots`,
+/// which `rejects` kept. Out of line, so the triangle loop, where most triangles of a
+/// scene outside the view end, does not pay for this function's stack frame.
+#[inline(never)]
+fn set_up_triangle(
+    state: &RenderState,
+    vertices: &vertex::Vertices,
+    slots: [usize; 3],
+    bounds: Rect,
+    depth: Option<DepthFormat>,
+    emit: &mut impl FnMut(raster::Prim),
+) {
+    let (a, b, c) = (
+        vertices.at(slots[0]),
+        vertices.at(slots[1]),
+        vertices.at(slots[2]),
+    );
+    // Inside the clip volume (most triangles), the clipper would pass it on as it is.
+    if !vertices.may_clip(slots[0], slots[1], slots[2]) {
+        if let Some(t) = setup::triangle(state, [a, b, c], c, bounds, depth) {
+            emit(raster::Prim::Triangle(t));
+        }
+        return;
+    }
+    clip::triangle(a, b, c, |poly| {
+        // The clipped polygon is convex: fan it out from its first vertex.
+        for i in 1..poly.len() - 1 {
+            let tri = [poly[0], poly[i], poly[i + 1]];
+            if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
+                emit(raster::Prim::Triangle(t));
+            }
+        }
+    });
 }
 
 /// Draws `draw` with `state` into `target` and returns when every pixel is written.

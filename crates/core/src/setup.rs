@@ -14,12 +14,12 @@ const HALF: i64 = ONE / 2;
 /// the libm call `f64::round` compiles to on baseline x86-64 (no SSE4.1 `roundsd`).
 #[inline]
 pub(crate) fn round_i64(v: f64) -> i64 {
-    // The truncation is exact below 2⁶³, and so is the remainder: a fraction of v.
-    let t = v as i64;
-    let r = v - t as f64;
-    // Flags, not branches: which way a vertex rounds is a coin toss the branch predictor
-    // loses half the time, and set-up rounds six coordinates per triangle.
-    t.saturating_add(i64::from(r >= 0.5) - i64::from(r <= -0.5))
+    // Truncating v + ±(½ − 2⁻⁵⁴) rounds half away from zero: with a fraction of exactly ½
+    // the sum rounds up to the next integer (for v = ½ by a tie, to the even 1), with a
+    // smaller one it stays below it, and from 2⁵² on v is an integer the sum rounds back
+    // to (the test below holds this to `f64::round`). No branches: which way a vertex
+    // rounds is a coin toss a branch predictor loses half the time.
+    (v + (0.5 - f64::EPSILON / 4.0).copysign(v)) as i64
 }
 
 /// An edge function `E(x, y) = a·x + b·y + c` over subpixel coordinates relative to the

@@ -439,6 +439,15 @@ impl<'a> DrawCall<'a> {
 /// `GL_MAX_CLIP_PLANES`: the user clip planes a vertex carries distances for.
 pub const MAX_USER_PLANES: usize = 6;
 
+/// The smallest w that survives clipping. A vertex at (0, 0, 0, 0) lies inside all six
+/// frustum planes, so this plane is what keeps 1/w finite.
+pub const W_MIN: f32 = 1e-30;
+
+/// The guard band's half-width in normalized device coordinates. Window coordinates then
+/// stay within (GUARD + 1) × MAX_VIEWPORT_DIM / 2 < 2¹⁶ pixels of the viewport, which keeps
+/// snapped coordinates below 2²⁴ and edge products far below 2⁶³.
+pub const GUARD: f32 = 8.0;
+
 /// A bit per frustum x or y plane that clip position `p` is strictly outside of (x < −w,
 /// y < −w, x > w, y > w; negating is exact).
 #[inline]
@@ -457,22 +466,50 @@ pub fn all_finite<const N: usize>(ps: [Vec4; N]) -> bool {
     zero.cmpeq(Vec4::ZERO).all()
 }
 
-/// A code bit of `reject_code`: a coordinate is infinite or NaN.
+/// The code bits of [`reject_code`] from [`frustum_code`].
+const OUTSIDE_FRUSTUM: u8 = 0xf;
+
+/// A code bit of [`reject_code`]: a coordinate is infinite or NaN.
 const NOT_FINITE: u8 = 1 << 4;
 
-/// What [`rejects`] reads of one clip position, as a byte: its [`frustum_code`] and
-/// [`NOT_FINITE`]. The vertex stage keeps one per vertex, computed eight at a time (the
-/// tests hold it to this one-position statement), so a triangle outside the view is
-/// dropped from three bytes, before its vertices are read.
-#[cfg(test)]
-fn reject_code(p: Vec4) -> u8 {
-    frustum_code(p) as u8 | if all_finite([p]) { 0 } else { NOT_FINITE }
+/// A code bit of [`reject_code`]: the position is outside a plane triangles are clipped
+/// against (the guard band's x and y planes, the near and far planes, w = [`W_MIN`]), so a
+/// triangle with this vertex may need clipping.
+pub(crate) const CLIPS: u8 = 1 << 5;
+
+/// Whether clip position `p` is outside a plane of [`CLIPS`], as `clip::outcode` decides
+/// for a finite position: its distance `x + g ≥ 0` (g = GUARD · w) holds exactly
+/// when x ≥ −g (a sum of two floats rounds to 0 only when it is 0), and with `g − x ≥ 0`
+/// that is |x| ≤ g; likewise |y| ≤ g and |z| ≤ w. NaN counts as outside.
+#[inline]
+fn clips(p: Vec4) -> bool {
+    let g = GUARD * p.w;
+    let inside = (p.x.abs() <= g) & (p.y.abs() <= g) & (p.z.abs() <= p.w) & (p.w >= W_MIN);
+    !inside
 }
 
-/// [`rejects`] from the three vertices' `reject_code`s.
+/// What set-up reads of one clip position, as a byte: its [`frustum_code`],
+/// [`NOT_FINITE`] and [`CLIPS`]. The vertex stage keeps one per vertex, computed eight at
+/// a time (the tests hold that to this statement), so a triangle outside the view is
+/// dropped from three bytes, before its vertices are read, and one inside the clip volume
+/// goes to set-up without the clipper's tests.
+#[inline]
+pub(crate) fn reject_code(p: Vec4) -> u8 {
+    frustum_code(p) as u8
+        | if all_finite([p]) { 0 } else { NOT_FINITE }
+        | if clips(p) { CLIPS } else { 0 }
+}
+
+/// [`rejects`] from the three vertices' [`reject_code`]s.
 #[inline]
 fn rejects_codes(a: u8, b: u8, c: u8) -> bool {
-    (a | b | c) & NOT_FINITE != 0 || a & b & c != 0
+    // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
+    // than let NaN reach the rasterizer. Outside one of the frustum's x or y planes with all
+    // three vertices, the triangle is outside it everywhere (the plane's half-space is
+    // convex, whatever the signs of w), so it could only cover pixels beyond the viewport,
+    // which the rasterizer never draws. Most such triangles lie inside the guard band and
+    // would otherwise be set up in full only for their bounding box to come out empty.
+    (a | b | c) & NOT_FINITE != 0 || a & b & c & OUTSIDE_FRUSTUM != 0
 }
 
 /// Whether clipping drops the triangle with clip positions (a, b, c) from the positions
@@ -480,17 +517,7 @@ fn rejects_codes(a: u8, b: u8, c: u8) -> bool {
 /// and the deferred lighting lights no vertex of such a triangle.
 #[inline]
 pub fn rejects(a: Vec4, b: Vec4, c: Vec4) -> bool {
-    // Infinite or NaN coordinates have no meaningful clipped shape; drop the triangle rather
-    // than let NaN reach the rasterizer.
-    if !all_finite([a, b, c]) {
-        return true;
-    }
-    // Outside one of the frustum's x or y planes with all three vertices, the triangle is
-    // outside it everywhere (the plane's half-space is convex, whatever the signs of w), so
-    // it could only cover pixels beyond the viewport, which the rasterizer never draws.
-    // Most such triangles lie inside the guard band and would otherwise be set up in full
-    // only for their bounding box to come out empty.
-    frustum_code(a) & frustum_code(b) & frustum_code(c) != 0
+    rejects_codes(reject_code(a), reject_code(b), reject_code(c))
 }
 
 /// Transformed vertices of one piece of a draw call (up to 2048 primitives), addressed by
@@ -501,7 +528,7 @@ pub struct Vertices {
     /// `layout.stride` floats per vertex, then padding to make the last vertex's view a
     /// whole [`Floats`].
     data: Vec<f32>,
-    /// Each vertex's `reject_code`.
+    /// Each vertex's [`reject_code`].
     codes: Vec<u8>,
     layout: Layout,
     map: VertexMap,
@@ -535,6 +562,14 @@ impl Vertices {
     #[inline]
     pub fn rejects(&self, a: usize, b: usize, c: usize) -> bool {
         rejects_codes(self.codes[a], self.codes[b], self.codes[c])
+    }
+
+    /// Whether the triangle of the vertices in slots `a`, `b` and `c`, not rejected, may
+    /// need clipping: a vertex's code has the `CLIPS` bit, or user planes are enabled.
+    /// Otherwise [`clip::triangle`](super::clip::triangle) would pass it on as it is.
+    #[inline]
+    pub fn may_clip(&self, a: usize, b: usize, c: usize) -> bool {
+        self.layout.planes > 0 || (self.codes[a] | self.codes[b] | self.codes[c]) & CLIPS != 0
     }
 
     /// The vertex in slot `k` ([`Vertices::slot`]).
@@ -816,8 +851,20 @@ mod tests {
         -1e30,
     ];
 
+    /// The rejection rule stated directly: a coordinate that is not finite, or one of the
+    /// planes x = −w, y = −w, x = w, y = w with all three positions strictly beyond it.
+    fn rejected_by_rule(ps: [Vec4; 3]) -> bool {
+        let beyond = |axis: fn(Vec4) -> f32, sign: f32| ps.iter().all(|&p| sign * axis(p) > p.w);
+        ps.iter()
+            .any(|p| p.to_array().iter().any(|c| !c.is_finite()))
+            || beyond(|p| p.x, -1.0)
+            || beyond(|p| p.y, -1.0)
+            || beyond(|p| p.x, 1.0)
+            || beyond(|p| p.y, 1.0)
+    }
+
     #[test]
-    fn reject_codes_decide_as_the_positions_do() {
+    fn reject_codes_decide_as_the_rule_says() {
         // Positions on and around the planes x = ±w and y = ±w, with infinities and NaN.
         let ps: Vec<Vec4> = EDGES
             .iter()
@@ -829,15 +876,19 @@ mod tests {
         for (i, &a) in ps.iter().enumerate() {
             for &b in &ps[i % 7..] {
                 for &c in ps.iter().step_by(5) {
-                    let by_codes = rejects_codes(reject_code(a), reject_code(b), reject_code(c));
-                    assert_eq!(by_codes, rejects(a, b, c), "{a} {b} {c}");
-                    rejected += usize::from(by_codes);
-                    kept += usize::from(!by_codes);
+                    let by_rule = rejected_by_rule([a, b, c]);
+                    assert_eq!(rejects(a, b, c), by_rule, "{a} {b} {c}");
+                    rejected += usize::from(by_rule);
+                    kept += usize::from(!by_rule);
                 }
             }
         }
         // Both answers occur, so the comparison can fail either way.
         assert!(rejected > 0 && kept > 0, "{rejected} rejected, {kept} kept");
+        // Every vertex beyond the guard band, each on another side: kept, to be clipped.
+        let far = [(-1e30, 0.0), (1e30, 0.0), (0.0, 1e30)].map(|(x, y)| Vec4::new(x, y, 0.5, 1.0));
+        assert!(far.iter().all(|&p| reject_code(p) & CLIPS != 0));
+        assert!(!rejects(far[0], far[1], far[2]));
     }
 
     #[test]

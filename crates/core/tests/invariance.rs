@@ -8,7 +8,8 @@ mod scenes;
 
 use glam::Mat4;
 use gles_cm_core::state::{
-    AlphaTest, Blend, BlendFactor, LogicOp, PolygonOffset, Quality, StencilOp, StencilTest, TexGen,
+    AlphaTest, Blend, BlendEquation, BlendFactor, LogicOp, PolygonOffset, Quality, StencilOp,
+    StencilTest, TexGen,
 };
 use gles_cm_core::texenv::{EnvMode, Fog, FogMode, TexEnv, TextureUnit};
 use gles_cm_core::texture::{MagFilter, MinFilter};
@@ -597,6 +598,21 @@ fn every_route_on_every_format_agrees_with_the_per_pixel_routine() {
             }));
             let mut flat = setup(smooth.clone());
             flat.shade_model = gles_cm_core::state::ShadeModel::Flat;
+            if blending {
+                // The floor's spans are long enough for a flat color's blend to be worked
+                // out once a span: the alpha blend, and other factors and equations.
+                routes.push((format!("flat floor, {how}"), flat.clone(), scenes::floor));
+                let mut other = flat.clone();
+                other.blend = Some(Blend {
+                    eq_alpha: BlendEquation::Subtract,
+                    ..Blend::func(BlendFactor::OneMinusSrcColor, BlendFactor::SrcColor)
+                });
+                routes.push((
+                    format!("flat floor, other blend, {how}"),
+                    other,
+                    scenes::floor,
+                ));
+            }
             routes.push((format!("flat, {how}"), flat, || {
                 scenes::smooth_triangles(40, 12)
             }));

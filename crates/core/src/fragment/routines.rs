@@ -435,6 +435,75 @@ fn add_blend(b: &Blend, src: &Channels, dst: &mut Channels) -> bool {
     true
 }
 
+/// The blend of a source color that is the same at every pixel of a span (flat shading,
+/// points) by factors that do not read the destination, worked out once per span: every
+/// channel is then `add + d·mul`, one multiply and one add per lane. For ADD that is
+/// `s·sf + d·df` with `s·sf` the product `blend` forms; SUBTRACT negates the factor
+/// (`s·sf + d·(−df)` is `s·sf − d·df`, bit for bit) and REVERSE_SUBTRACT the source term
+/// (`−(s·sf) + d·df` is `d·df − s·sf`), so the results are the per-pixel blend's bits.
+#[derive(Clone, Copy)]
+struct ConstantBlend {
+    add: [f32; 4],
+    mul: [f32; 4],
+}
+
+/// Spans shorter than this blend a flat color group by group as any other: working the
+/// blend out once costs about as much as blending three groups.
+const CONSTANT_BLEND_MIN: usize = 4 * LANES;
+
+impl ConstantBlend {
+    /// `None` when a factor reads the destination or an equation is MIN or MAX.
+    fn new(b: &Blend, src: [f32; 4]) -> Option<ConstantBlend> {
+        use BlendFactor::*;
+        let reads_dst = |f: BlendFactor| {
+            matches!(
+                f,
+                DstColor | OneMinusDstColor | DstAlpha | OneMinusDstAlpha | SrcAlphaSaturate
+            )
+        };
+        if [b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha]
+            .into_iter()
+            .any(reads_dst)
+        {
+            return None;
+        }
+        let src = src.map(|c| c.clamp(0.0, 1.0));
+        // The factors above never read this.
+        let dst = [0.0; 4];
+        let (sf, df) = (
+            factors(b.src_rgb, &src, &dst),
+            factors(b.dst_rgb, &src, &dst),
+        );
+        let sa = factors(b.src_alpha, &src, &dst)[3];
+        let da = factors(b.dst_alpha, &src, &dst)[3];
+        let (mut add, mut mul) = ([0.0; 4], [0.0; 4]);
+        for c in 0..4 {
+            let (eq, s, f) = if c < 3 {
+                (b.eq_rgb, src[c] * sf[c], df[c])
+            } else {
+                (b.eq_alpha, src[3] * sa, da)
+            };
+            (add[c], mul[c]) = match eq {
+                BlendEquation::Add => (s, f),
+                BlendEquation::Subtract => (s, -f),
+                BlendEquation::ReverseSubtract => (-s, f),
+                BlendEquation::Min | BlendEquation::Max => return None,
+            };
+        }
+        Some(ConstantBlend { add, mul })
+    }
+
+    /// Replaces the destination colors `dst` by the blend.
+    #[inline(always)]
+    fn apply(&self, dst: &mut Channels) {
+        for c in 0..4 {
+            for j in 0..LANES {
+                dst[c][j] = self.add[c] + dst[c][j] * self.mul[c];
+            }
+        }
+    }
+}
+
 /// Runs `$group(i0, live, color, depth)` over the groups of the span of `$len` pixels at
 /// `$start` in `$band`. `live` masks the lanes inside the span: a partial last group works
 /// in place on the band's next pixels, writing none of them (the group routines AND their
@@ -617,6 +686,10 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     }
     let start = (span.y - band.y0) as usize * band.width + span.x0 as usize;
     let len = interp.len;
+    let constant_blend = match k.blend {
+        Some(b) if BLEND && !SMOOTH && len >= CONSTANT_BLEND_MIN => ConstantBlend::new(&b, flat),
+        _ => None,
+    };
     if let (false, Some(words)) = (DEPTH, flat_words) {
         // A fill of the span with the words' pattern, through the color mask.
         let keep = k.keep;
@@ -633,6 +706,7 @@ pub(super) fn simple<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
             &interp,
             flat,
             flat_words.as_ref(),
+            constant_blend.as_ref(),
             i0,
             live,
             color,
@@ -650,6 +724,7 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     interp: &SpanInterp,
     flat: [f32; 4],
     flat_words: Option<&Lane<u32>>,
+    constant_blend: Option<&ConstantBlend>,
     i0: usize,
     live: Lane<u32>,
     color: &mut Lane<u32>,
@@ -661,6 +736,12 @@ fn simple_group<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     };
     if let Some(words) = flat_words {
         return store(k, color, &pass, words);
+    }
+    if let (true, Some(cb)) = (BLEND, constant_blend) {
+        let mut dst: Channels = [[0.0; LANES]; 4];
+        decode_lanes(k.color, color, &mut dst, k.perspective == Quality::Fastest);
+        cb.apply(&mut dst);
+        return store(k, color, &pass, &encode_lanes(k.color, &dst, thresholds));
     }
     // Measured: with a depth test in the same group the separate steps are faster.
     let fused = if SMOOTH && !BLEND && !DEPTH {
@@ -1524,23 +1605,42 @@ mod tests {
             src_alpha: One,
             ..Blend::func(SrcAlpha, OneMinusSrcAlpha)
         });
+        blends.push(Blend {
+            eq_rgb: BlendEquation::ReverseSubtract,
+            eq_alpha: BlendEquation::Subtract,
+            ..Blend::func(OneMinusSrcColor, SrcAlpha)
+        });
+        let mut constant = 0;
         for b in &blends {
             for at in 0..10 {
                 let (mut src, mut dst) = (lane(at), lane(at + 4));
                 let (src0, dst0) = (src, dst);
                 blend_lanes(b, &mut src, &mut dst);
+                // The same source at every lane, blended as a span of one flat color.
+                let flat: [f32; 4] = std::array::from_fn(|c| src0[c][0]);
+                let mut over = dst0;
+                let cb = ConstantBlend::new(b, flat);
+                if let Some(cb) = &cb {
+                    cb.apply(&mut over);
+                    constant += 1;
+                }
                 for j in 0..LANES {
-                    let want = blend(
-                        b,
-                        std::array::from_fn(|c| src0[c][j]),
-                        std::array::from_fn(|c| dst0[c][j]),
-                    );
+                    let d = std::array::from_fn(|c| dst0[c][j]);
+                    let want = blend(b, std::array::from_fn(|c| src0[c][j]), d);
+                    let want_flat = blend(b, flat, d);
                     for c in 0..4 {
                         assert_eq!(dst[c][j].to_bits(), want[c].to_bits(), "{b:?} lane {j}");
+                        if cb.is_some() {
+                            let got = over[c][j].to_bits();
+                            assert_eq!(got, want_flat[c].to_bits(), "{b:?} flat, lane {j}");
+                        }
                     }
                 }
             }
         }
+        // The blends that read no destination, at 10 sources each: 6 × 6 factor pairs,
+        // SUBTRACT, REVERSE_SUBTRACT, another alpha factor, different equations.
+        assert_eq!(constant, (36 + 4) * 10);
     }
 
     /// Inputs around every rounding and dithering boundary of the narrow formats, plus values

@@ -10,7 +10,7 @@ use glam::{Mat3, Mat4, Vec4};
 use super::lighting::Prepared;
 #[cfg(test)]
 use super::ClipVertex;
-use super::{AttribArray, AttribSource, DrawCall, Indices, Layout, Primitive};
+use super::{AttribArray, AttribSource, DrawCall, Indices, Layout, Primitive, GUARD, W_MIN};
 use crate::lanes::{max_ps, min_ps, Lane, LANES};
 use crate::state::{RenderState, ShadeModel, TexGen};
 use crate::TEXTURE_UNITS;
@@ -313,7 +313,7 @@ impl<'s, 'd> Stage<'s, 'd> {
     /// as `write` (the tests' one-vertex statement) would one by one and bit for bit
     /// alike, with positions, normals and colors as structures of arrays so transform,
     /// normalization and lighting vectorize across vertices. Only what the layout keeps
-    /// is computed. Returns the vertices' `vertex::reject_code`s.
+    /// is computed. Returns the vertices' [`reject_code`](super::reject_code)s.
     #[inline(always)]
     pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [f32], light: bool) -> Lane<u32> {
         let layout = &self.layout;
@@ -616,7 +616,7 @@ fn store(out: &mut [f32], stride: usize, at: usize, a: &[Lane<f32>; 4]) {
     }
 }
 
-/// `vertex::reject_code` of eight clip positions, the same comparisons
+/// [`reject_code`](super::reject_code) of eight clip positions, the same comparisons
 /// lane by lane, in 32-bit lanes: written with bytes, or narrowed here, the loop compiled
 /// to scalar code (some 45 instructions a vertex, against 4).
 #[inline(always)]
@@ -625,11 +625,14 @@ fn reject_codes(pos: &[Lane<f32>; 4]) -> Lane<u32> {
     for j in 0..LANES {
         let (x, y, z, w) = (pos[0][j], pos[1][j], pos[2][j], pos[3][j]);
         let finite = x * 0.0 + y * 0.0 + z * 0.0 + w * 0.0 == 0.0;
+        let g = GUARD * w;
+        let inside = (x.abs() <= g) & (y.abs() <= g) & (z.abs() <= w) & (w >= W_MIN);
         codes[j] = u32::from(-x > w)
             | u32::from(-y > w) << 1
             | u32::from(x > w) << 2
             | u32::from(y > w) << 3
-            | u32::from(!finite) << 4;
+            | u32::from(!finite) << 4
+            | u32::from(!inside) << 5;
     }
     codes
 }
@@ -708,7 +711,7 @@ fn clamp01(c: Vec4) -> Vec4 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{rejects, run, AttribSource, ComponentType, Indices};
+    use super::super::{rejects, run, AttribSource, ComponentType, Indices, CLIPS};
     use super::*;
     use crate::texenv::TextureUnit;
 
@@ -1301,35 +1304,45 @@ mod tests {
 
     #[test]
     fn reject_codes_in_lanes_match_one_position_at_a_time() {
+        // Around the frustum's planes (w = ±1) and the guard band's (x or y = ±8 with
+        // w = 1, z at ±w), with NaN and infinities.
         let v = [
             0.0,
             -0.0,
             1.0,
             -1.0,
-            3.0,
+            8.0,
+            -8.0,
             f32::NAN,
             f32::INFINITY,
             -f32::INFINITY,
+            8.000001,
+            -2.0,
+            1e-31,
         ];
-        let mut checked = 0;
-        for (i, &x) in v.iter().enumerate() {
-            for (j, &y) in v.iter().enumerate() {
-                // Eight positions: w and z run through the values against x and y.
-                let pos: [Lane<f32>; 4] = [
-                    [x; LANES],
-                    [y; LANES],
-                    std::array::from_fn(|k| v[(k + i) % LANES] * 0.5),
-                    std::array::from_fn(|k| v[(k + j + 3) % LANES]),
-                ];
-                let codes = reject_codes(&pos);
-                for k in 0..LANES {
-                    let p = Vec4::new(pos[0][k], pos[1][k], pos[2][k], pos[3][k]);
-                    assert_eq!(codes[k], u32::from(crate::vertex::reject_code(p)), "{p}");
-                    checked += usize::from(codes[k] != 0);
-                }
+        // Every combination of the values, eight positions at a time.
+        let all: Vec<Vec4> = v
+            .iter()
+            .flat_map(|&x| v.iter().map(move |&y| (x, y)))
+            .flat_map(|(x, y)| {
+                v.iter()
+                    .flat_map(move |&z| v.map(|w| Vec4::new(x, y, z, w)))
+            })
+            .collect();
+        let mut seen = [false; 64];
+        for group in all.chunks_exact(LANES) {
+            let pos: [Lane<f32>; 4] = std::array::from_fn(|c| std::array::from_fn(|k| group[k][c]));
+            let codes = reject_codes(&pos);
+            for (&p, &code) in group.iter().zip(&codes) {
+                assert_eq!(code, u32::from(crate::vertex::reject_code(p)), "{p}");
+                seen[code as usize & 0x3f] = true;
             }
         }
-        assert!(checked > 0);
+        // Kept positions inside and outside the clip volume, and every rejecting bit.
+        assert!(seen[0] && seen[CLIPS as usize], "{seen:?}");
+        for bit in 0..5 {
+            assert!((0..64).any(|c| c >> bit & 1 == 1 && seen[c]), "bit {bit}");
+        }
     }
 
     #[test]
