@@ -277,22 +277,21 @@ fn set_up_triangle(
         vertices.at(slots[1]),
         vertices.at(slots[2]),
     );
-    // Inside the clip volume (most triangles), the clipper would pass it on as it is.
-    if !vertices.may_clip(slots[0], slots[1], slots[2]) {
-        if let Some(t) = setup::triangle(state, [a, b, c], c, bounds, depth) {
-            emit(raster::Prim::Triangle(t));
-        }
-        return;
-    }
-    clip::triangle(a, b, c, |poly| {
-        // The clipped polygon is convex: fan it out from its first vertex.
+    // A clipped polygon is convex: fan it out from its first vertex.
+    let mut fan = |poly: &[vertex::VertexRef<'_>]| {
         for i in 1..poly.len() - 1 {
             let tri = [poly[0], poly[i], poly[i + 1]];
             if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
                 emit(raster::Prim::Triangle(t));
             }
         }
-    });
+    };
+    // Inside the clip volume (most triangles), the clipper would pass it on as it is.
+    if vertices.may_clip(slots[0], slots[1], slots[2]) {
+        clip::triangle(a, b, c, fan);
+    } else {
+        fan(&[a, b, c]);
+    }
 }
 
 /// Draws `draw` with `state` into `target` and returns when every pixel is written.
