@@ -87,15 +87,14 @@ pub fn unorm(c: f32, bits: u32) -> u32 {
 /// Widens an n-bit unsigned normalized value to 8 bits as `round(v · 255 / (2ⁿ − 1))`, the
 /// conversion ES 1.1 §4.3.1 gives for reading pixels (bit replication is off by one for some
 /// values, e.g. 3 of 31). The n-bit value is still the byte's top n bits, so it can be
-/// recovered by a shift.
+/// recovered by a shift. The division by 2ⁿ − 1 is a multiply and a shift, exact for every
+/// v < 2ⁿ, n ≤ 8 (a test checks them all): a division by a number known only at run time
+/// is slow and does not vectorize.
+#[inline(always)]
 pub fn expand_to_8(v: u32, bits: u32) -> u8 {
-    match bits {
-        8 => v as u8,
-        n => {
-            let max = (1u32 << n) - 1;
-            ((v * 255 + max / 2) / max) as u8
-        }
-    }
+    let max = (1u32 << bits) - 1;
+    let magic = (1u32 << 20).div_ceil(max);
+    (((v * 255 + max / 2) * magic) >> 20) as u8
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -503,6 +502,17 @@ pub fn resolve_words(format: ColorFormat, words: &[u32; multisample::SAMPLES]) -
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn expand_to_8_is_the_rounded_quotient_for_every_value() {
+        for n in 1..=8 {
+            let max = (1u32 << n) - 1;
+            for v in 0..=max {
+                let want = (v * 255 + max / 2) / max;
+                assert_eq!(expand_to_8(v, n) as u32, want, "{v} of {n} bits");
+            }
+        }
+    }
 
     #[test]
     fn rgb565_round_trips_through_storage() {

@@ -212,6 +212,30 @@ fn gather_as<const F: u8, const S: usize, const N: usize>(
     idx: &[usize; LANES],
     out: &mut [Lane<f32>; N],
 ) {
+    // Consecutive elements packed back to back (a draw's vertices in order from an array
+    // without gaps) are one slice of fixed-size chunks: one bounds check for the group,
+    // not one per element.
+    let size = S * format::bytes(F);
+    let consecutive = idx
+        .iter()
+        .enumerate()
+        .all(|(k, &i)| i == idx[0].wrapping_add(k));
+    let block = idx[0]
+        .checked_mul(size)
+        .and_then(|start| a.data.get(start..start.checked_add(LANES * size)?));
+    let packed = size > 0 && a.stride == size;
+    if let (true, true, Some(block)) = (consecutive, packed, block) {
+        for (k, b) in block.chunks_exact(size).enumerate() {
+            for (c, row) in out.iter_mut().enumerate() {
+                row[k] = if c < S {
+                    component::<F>(b, c)
+                } else {
+                    DEFAULT[c]
+                };
+            }
+        }
+        return;
+    }
     for (k, &i) in idx.iter().enumerate() {
         let v = element::<F, S>(a.data, a.stride, i);
         for (row, v) in out.iter_mut().zip(v) {
@@ -667,7 +691,7 @@ fn fill(
     let mut numbers = numbers;
     let light_all = stage.deferred.is_none();
     // Each group is written here, then appended: the list is written once, not first
-    // initialized.
+    // initialized. Slots a group leaves unwritten (deferred colors) stay zero.
     let mut group = [0.0; LANES * MAX_STRIDE];
     for first in (0..count).step_by(LANES) {
         // A short last group repeats its first vertex in the unused lanes.

@@ -293,21 +293,9 @@ fn encode_channel<const N: u32>(c: &Lane<f32>, thresholds: Option<&Lane<f32>>) -
     }
     let mut out = [0u32; LANES];
     for j in 0..LANES {
-        out[j] = expand_lane(v[j] as u32, N);
+        out[j] = expand_to_8(v[j] as u32, N) as u32;
     }
     out
-}
-
-/// `expand_to_8(v, n)` for v < 2ⁿ, n ≤ 6: the division by 2ⁿ − 1 as a multiply and shift
-/// (exact for every such v, checked by a test), which vectorizes where a division does not.
-#[inline(always)]
-fn expand_lane(v: u32, n: u32) -> u32 {
-    if n == 1 {
-        return v * 255;
-    }
-    let max = (1u32 << n) - 1;
-    let magic = (1u32 << 20).div_ceil(max);
-    ((v * 255 + max / 2) * magic) >> 20
 }
 
 /// One blend factor for channel `c` of every lane (the alpha lane of `SRC_ALPHA_SATURATE`
@@ -1546,19 +1534,6 @@ fn textured_group<const F: u8, const DEPTH: bool, const BLEND: bool>(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn expand_lane_is_expand_to_8_for_every_narrow_value() {
-        for n in 1..=6 {
-            for v in 0..(1u32 << n) {
-                assert_eq!(
-                    expand_lane(v, n),
-                    expand_to_8(v, n) as u32,
-                    "{v} of {n} bits"
-                );
-            }
-        }
-    }
 
     /// Every pair of blend factors with the ADD equation (so the functions `add_blend`
     /// writes out and the general loop alike), and every equation with one factor pair,

@@ -74,6 +74,8 @@ pub(super) struct Stage<'s, 'd> {
     attenuate: bool,
     /// An enabled unit's coordinates are generated from the normal (texgen).
     texgen: bool,
+    /// An enabled unit's coordinates are a reflection map (texgen).
+    reflection: bool,
     /// What each vertex keeps.
     pub layout: Layout,
     /// Lighting after transforming, only of the vertices whose colors are read (see
@@ -164,6 +166,7 @@ impl<'s, 'd> Stage<'s, 'd> {
             tex,
             attenuate: state.point_params.attenuation != [1.0, 0.0, 0.0],
             texgen: texgen(TexGen::NormalMap) || texgen(TexGen::ReflectionMap),
+            reflection: texgen(TexGen::ReflectionMap),
             layout,
             deferred,
         }
@@ -335,24 +338,29 @@ impl<'s, 'd> Stage<'s, 'd> {
         };
         // Texgen reads the normals; lighting shares them then.
         let normal = self.texgen.then(|| self.normals_lanes(idx));
+        // Reflection-map coordinates, worked out before the loop over the units and only
+        // when a unit reads them: computed inside the loop, the arithmetic was hoisted out
+        // of it by LLVM (pure arithmetic may be speculated) and ran for every group of
+        // every draw, with or without texgen.
+        let reflection = match &normal {
+            Some(n) if self.reflection => Some(reflection_lanes(&eye, n)),
+            _ => None,
+        };
         let (color, back_color) =
             self.colors_lanes(idx, light, self.need_eye.then_some(&eye), normal.as_ref());
+        // Colors lit later ([`Deferred`]) are written then; until then their slots keep
+        // the zeros `fill` starts its group with, and only the positions are stored here.
+        let deferred = self.lighting.is_some() && !light;
         // The position and the color, at the same offsets in every layout.
         for (v, k) in out.chunks_exact_mut(stride).zip(0..LANES) {
             if let Some(v) = v.get_mut(..8) {
-                v.copy_from_slice(&[
-                    pos[0][k],
-                    pos[1][k],
-                    pos[2][k],
-                    pos[3][k],
-                    color[0][k],
-                    color[1][k],
-                    color[2][k],
-                    color[3][k],
-                ]);
+                v[..4].copy_from_slice(&[pos[0][k], pos[1][k], pos[2][k], pos[3][k]]);
+                if !deferred {
+                    v[4..].copy_from_slice(&[color[0][k], color[1][k], color[2][k], color[3][k]]);
+                }
             }
         }
-        if layout.two_side() {
+        if layout.two_side() && !deferred {
             store(out, stride, layout.back(), &back_color);
         }
         for (u, src) in self.tex.iter().enumerate() {
@@ -366,7 +374,7 @@ impl<'s, 'd> Stage<'s, 'd> {
                 }
                 TexSource::Gen(g, matrix) => {
                     let n = normal.as_ref().expect("texgen reads the normals");
-                    (texgen_lanes(g, n, &eye), matrix)
+                    (texgen_lanes(g, n, reflection.as_ref()), matrix)
                 }
             };
             if let Some(m) = matrix {
@@ -678,26 +686,37 @@ fn normalize_lanes(v: &mut [Lane<f32>; 3]) {
     }
 }
 
-/// Generated texture coordinates (s, t, r, 1) of each lane from its eye-space normal and
-/// position, in `finish`'s order: the normal itself, or the eye direction reflected about
-/// the unit normal, e − 2n(n·e) with both made unit first.
+/// The eye direction reflected about the normal, each made unit first, for every lane:
+/// e − 2n(n·e), the coordinates of a reflection map.
 #[inline(always)]
-fn texgen_lanes(g: TexGen, n: &[Lane<f32>; 3], eye: &[Lane<f32>; 4]) -> [Lane<f32>; 4] {
+fn reflection_lanes(eye: &[Lane<f32>; 4], n: &[Lane<f32>; 3]) -> [Lane<f32>; 3] {
+    let mut e = [eye[0], eye[1], eye[2]];
+    normalize_lanes(&mut e);
+    let mut u = *n;
+    normalize_lanes(&mut u);
+    let mut r = [[0.0; LANES]; 3];
+    for k in 0..LANES {
+        let d = u[0][k] * e[0][k] + u[1][k] * e[1][k] + u[2][k] * e[2][k];
+        for a in 0..3 {
+            r[a][k] = e[a][k] - 2.0 * u[a][k] * d;
+        }
+    }
+    r
+}
+
+/// Generated texture coordinates (s, t, r, 1) of each lane, in `finish`'s order: the
+/// eye-space normal `n` itself, or the [`reflection_lanes`] worked out beforehand.
+#[inline(always)]
+fn texgen_lanes(
+    g: TexGen,
+    n: &[Lane<f32>; 3],
+    reflection: Option<&[Lane<f32>; 3]>,
+) -> [Lane<f32>; 4] {
     let one = [1.0; LANES];
     match g {
         TexGen::NormalMap => [n[0], n[1], n[2], one],
         TexGen::ReflectionMap => {
-            let mut e = [eye[0], eye[1], eye[2]];
-            normalize_lanes(&mut e);
-            let mut u = *n;
-            normalize_lanes(&mut u);
-            let mut r = [[0.0; LANES]; 3];
-            for k in 0..LANES {
-                let d = u[0][k] * e[0][k] + u[1][k] * e[1][k] + u[2][k] * e[2][k];
-                for a in 0..3 {
-                    r[a][k] = e[a][k] - 2.0 * u[a][k] * d;
-                }
-            }
+            let r = reflection.expect("reflection maps have their coordinates");
             [r[0], r[1], r[2], one]
         }
     }
