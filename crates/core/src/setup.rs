@@ -300,11 +300,17 @@ pub struct Triangle {
 /// Sets up a clipped triangle for rasterization inside `bounds` of a target with `depth`
 /// bits, or returns `None` when it is culled, has no area, or cannot touch `bounds`.
 /// `provoking` supplies the flat-shaded color. The triangle comes already wrapped as a
-/// primitive, built where the caller receives it rather than copied into one.
-pub fn triangle(
+/// primitive, built where the caller receives it rather than copied into one. Compiled
+/// also for AVX2 and SSE4.1 and chosen at run time, as the vertex and span loops are: the
+/// same f64 operations, so the same results.
+#[cfg_attr(
+    not(fuzzing),
+    multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
+)]
+pub fn triangle<'v>(
     state: &RenderState,
-    v: [VertexRef<'_>; 3],
-    provoking: VertexRef<'_>,
+    v: [VertexRef<'v>; 3],
+    provoking: VertexRef<'v>,
     bounds: Rect,
     depth: Option<DepthFormat>,
 ) -> Option<Triangle> {
@@ -423,13 +429,7 @@ pub fn triangle(
             ]);
         }
     }
-    // Checked here too: without fog or textures the call would build nothing.
-    let (tex, fog) = if state.fog.is_none() && state.textures.iter().all(Option::is_none) {
-        (None, Plane::default())
-    } else {
-        attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]))
-    };
-    Some(Triangle {
+    let mut triangle = Triangle {
         edges,
         bbox,
         shading: Shading {
@@ -439,10 +439,18 @@ pub fn triangle(
             color_w,
             flat,
             coverage: None,
-            tex,
-            fog,
+            tex: None,
+            fog: Plane::default(),
         },
-    })
+    };
+    // Checked here too: without fog or textures the call would build nothing. Assigned
+    // into the triangle rather than chosen beforehand: the chosen pair was stored and
+    // read back across two stores, a store-forwarding stall in every triangle's set-up.
+    if state.fog.is_some() || state.textures.iter().any(Option::is_some) {
+        let planes = attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]));
+        (triangle.shading.tex, triangle.shading.fog) = planes;
+    }
+    Some(triangle)
 }
 
 #[cfg(test)]
