@@ -216,25 +216,18 @@ fn gather_as<const F: u8, const S: usize, const N: usize>(
     // without gaps) are one slice of fixed-size chunks: one bounds check for the group,
     // not one per element.
     let size = S * format::bytes(F);
-    let consecutive = idx
-        .iter()
-        .enumerate()
-        .all(|(k, &i)| i == idx[0].wrapping_add(k));
-    let block = idx[0]
-        .checked_mul(size)
-        .and_then(|start| a.data.get(start..start.checked_add(LANES * size)?));
-    let packed = size > 0 && a.stride == size;
-    if let (true, true, Some(block)) = (consecutive, packed, block) {
-        for (k, b) in block.chunks_exact(size).enumerate() {
-            for (c, row) in out.iter_mut().enumerate() {
-                row[k] = if c < S {
-                    component::<F>(b, c)
-                } else {
-                    DEFAULT[c]
-                };
+    if size > 0 && a.stride == size && (0..LANES).all(|k| idx[k] == idx[0].wrapping_add(k)) {
+        let block = idx[0]
+            .checked_mul(size)
+            .and_then(|start| a.data.get(start..start.checked_add(LANES * size)?));
+        if let Some(block) = block {
+            for (k, b) in block.chunks_exact(size).enumerate() {
+                for (row, v) in out.iter_mut().zip(element::<F, S>(b, size, 0)) {
+                    row[k] = v;
+                }
             }
+            return;
         }
-        return;
     }
     for (k, &i) in idx.iter().enumerate() {
         let v = element::<F, S>(a.data, a.stride, i);
