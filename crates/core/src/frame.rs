@@ -20,6 +20,7 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use super::fragment::FragmentKey;
 use super::pool::{self, thread_count, together, Spread};
 use super::raster::Prim;
+use super::setup::Triangle;
 use super::target::{BandMut, Rect, SharedTarget, Target, TargetFormat};
 
 /// Rows per band: small enough that several bands per thread balance the load, large
@@ -45,7 +46,11 @@ pub struct Frame {
     format: TargetFormat,
     width: u32,
     height: u32,
+    /// The first `live` are the recorded primitives. The rest are kept from earlier
+    /// batches: a triangle is set up over an old one ([`Frame::triangle_slot`]) rather
+    /// than over a blank written first.
     prims: Vec<Prim>,
+    live: usize,
     /// The fragment key of each primitive, apart so that a primitive moves into `prims`
     /// straight from where it was built instead of through a tuple.
     prim_keys: Vec<u32>,
@@ -82,6 +87,7 @@ impl Frame {
             width,
             height,
             prims: Vec::new(),
+            live: 0,
             prim_keys: Vec::new(),
             keys: Vec::new(),
             bands: vec![Vec::new(); height.div_ceil(BAND_ROWS) as usize],
@@ -125,7 +131,7 @@ impl Frame {
 
     /// True when the frame holds enough work that it should be flushed before more is added.
     pub fn is_full(&self) -> bool {
-        self.prims.len() >= MAX_PENDING || self.planes.iter().any(Frame::is_full)
+        self.live >= MAX_PENDING || self.planes.iter().any(Frame::is_full)
     }
 
     /// Registers the fragment state for the primitives that follow, returning its number.
@@ -149,13 +155,51 @@ impl Frame {
         self.pending += 1;
     }
 
+    /// Records `p` with fragment state `key`.
     #[inline]
     pub fn prim(&mut self, p: Prim, key: u32) {
         let b = p.bbox();
-        let i = self.prims.len() as u32;
-        self.prims.push(p);
+        *self.next_slot(b, key) = p;
+    }
+
+    /// [`Frame::prim`] for each of `prims` in order, moved in as one block.
+    pub fn append(&mut self, mut prims: Vec<Prim>, key: u32) {
+        for (k, p) in prims.iter().enumerate() {
+            let b = p.bbox();
+            self.record(b.y0, b.y1, Command::Prim((self.live + k) as u32));
+        }
+        self.prims.truncate(self.live);
+        self.prims.append(&mut prims);
+        self.live = self.prims.len();
+        self.prim_keys.resize(self.live, key);
+    }
+
+    /// [`Frame::prim`] for a triangle that covers `bbox`, binned now and then set up in
+    /// the storage returned (`setup::TriangleSlot`).
+    #[inline]
+    pub fn triangle_slot(&mut self, bbox: Rect, key: u32) -> &mut Triangle {
+        let slot = self.next_slot(bbox, key);
+        if !matches!(slot, Prim::Triangle(_)) {
+            *slot = Prim::Triangle(Triangle::BLANK);
+        }
+        match slot {
+            Prim::Triangle(t) => t,
+            _ => unreachable!("the slot holds a triangle"),
+        }
+    }
+
+    /// Records the next primitive, which covers `bbox`, and returns its storage: an old
+    /// primitive, or a blank triangle where there is none.
+    #[inline]
+    fn next_slot(&mut self, bbox: Rect, key: u32) -> &mut Prim {
+        let i = self.live;
+        self.record(bbox.y0, bbox.y1, Command::Prim(i as u32));
         self.prim_keys.push(key);
-        self.record(b.y0, b.y1, Command::Prim(i));
+        self.live += 1;
+        if i == self.prims.len() {
+            self.prims.push(Prim::Triangle(Triangle::BLANK));
+        }
+        &mut self.prims[i]
     }
 
     pub fn clear_color(&mut self, rect: Rect, word: u32, keep: u32) {
@@ -317,7 +361,7 @@ impl Frame {
 
     /// Forgets what was recorded, keeping the lists' capacity.
     fn clear(&mut self) {
-        self.prims.clear();
+        self.live = 0;
         self.prim_keys.clear();
         self.keys.clear();
         self.bands.iter_mut().for_each(Vec::clear);

@@ -140,7 +140,7 @@ fn record_pieces(
     }
     let collect = |piece: &DrawCall<'_>| {
         let mut prims = Vec::with_capacity(piece.indices.len());
-        set_up(state, piece, bounds, depth, &mut |p| prims.push(p)).map(|()| prims)
+        set_up(state, piece, bounds, depth, &mut prims).map(|()| prims)
     };
     for batch in pieces.chunks(threads) {
         // Each piece's primitives land in its own slot, binned below in piece order.
@@ -161,9 +161,7 @@ fn record_pieces(
         for slot in slots {
             make_room(frame, &mut key);
             let piece = slot.into_inner().unwrap_or_else(|e| e.into_inner());
-            for p in piece.expect("every piece of the batch was set up")? {
-                frame.prim(p, key);
-            }
+            frame.append(piece.expect("every piece of the batch was set up")?, key);
         }
     }
     Ok(())
@@ -182,9 +180,40 @@ fn record_serially(
 ) -> Result<(), OutOfMemory> {
     for piece in pieces {
         make_room(frame, &mut key);
-        set_up(state, piece, bounds, depth, &mut |p| frame.prim(p, key))?;
+        set_up(state, piece, bounds, depth, &mut Binned { frame, key })?;
     }
     Ok(())
+}
+
+/// Where set-up puts a piece's primitives, in order: a point or a line as it comes, a
+/// triangle in the slot it is set up in.
+trait Sink: setup::TriangleSlot {
+    fn push(&mut self, p: raster::Prim);
+}
+
+/// A piece's own list, binned later.
+impl Sink for Vec<raster::Prim> {
+    fn push(&mut self, p: raster::Prim) {
+        Vec::push(self, p);
+    }
+}
+
+/// A frame's list, binned as the primitives come, with fragment state `key`.
+struct Binned<'f> {
+    frame: &'f mut Frame,
+    key: u32,
+}
+
+impl setup::TriangleSlot for Binned<'_> {
+    fn triangle_slot(&mut self, bbox: Rect) -> &mut setup::Triangle {
+        self.frame.triangle_slot(bbox, self.key)
+    }
+}
+
+impl Sink for Binned<'_> {
+    fn push(&mut self, p: raster::Prim) {
+        self.frame.prim(p, self.key);
+    }
 }
 
 /// `draw` cut into pieces of whole primitives. Strips overlap by two vertices and start at
@@ -221,9 +250,7 @@ fn set_up(
     draw: &DrawCall<'_>,
     bounds: Rect,
     depth: Option<DepthFormat>,
-    // Generic rather than `dyn`: inlined, a primitive can be built where it is stored
-    // instead of being copied (some 300 bytes) at each step.
-    emit: &mut impl FnMut(raster::Prim),
+    out: &mut impl Sink,
 ) -> Result<(), OutOfMemory> {
     let vertices = vertex::run(state, draw)?;
     let prim = draw.primitive;
@@ -232,7 +259,7 @@ fn set_up(
             let v = vertices.get(draw.indices.get(k));
             if clip::point(v) {
                 if let Some(p) = raster::point::setup(state, v, bounds) {
-                    emit(raster::Prim::Point(p));
+                    out.push(raster::Prim::Point(p));
                 }
             }
         }
@@ -241,7 +268,7 @@ fn set_up(
             let (va, vb) = (vertices.get(a), vertices.get(b));
             clip::line(va, vb, |ca, cb| {
                 if let Some(l) = raster::line::setup(state, ca, cb, vb, bounds) {
-                    emit(raster::Prim::Line(l));
+                    out.push(raster::Prim::Line(l));
                 }
             });
         });
@@ -253,7 +280,7 @@ fn set_up(
             let slots = [vertices.slot(a), vertices.slot(b), vertices.slot(c)];
             // Most triangles outside the view end here, from three bytes.
             if !vertices.rejects(slots[0], slots[1], slots[2]) {
-                set_up_triangle(state, &vertices, slots, bounds, depth, emit);
+                set_up_triangle(state, &vertices, slots, bounds, depth, out);
             }
         });
     }
@@ -270,7 +297,7 @@ fn set_up_triangle(
     slots: [usize; 3],
     bounds: Rect,
     depth: Option<DepthFormat>,
-    emit: &mut impl FnMut(raster::Prim),
+    out: &mut impl Sink,
 ) {
     let (a, b, c) = (
         vertices.at(slots[0]),
@@ -281,9 +308,7 @@ fn set_up_triangle(
     let mut fan = |poly: &[vertex::VertexRef<'_>]| {
         for i in 1..poly.len() - 1 {
             let tri = [poly[0], poly[i], poly[i + 1]];
-            if let Some(t) = setup::triangle(state, tri, c, bounds, depth) {
-                emit(raster::Prim::Triangle(t));
-            }
+            setup::triangle(state, tri, c, bounds, depth, out);
         }
     };
     // Inside the clip volume (most triangles), the clipper would pass it on as it is.

@@ -5,7 +5,7 @@ pub mod line;
 pub mod point;
 pub mod triangle;
 
-use super::setup::{Shading, Triangle};
+use super::setup::{Shading, Triangle, TriangleSlot};
 use super::target::Rect;
 
 pub use line::Line;
@@ -27,6 +27,17 @@ pub enum Prim {
     Triangle(Triangle),
     Line(Line),
     Point(Point),
+}
+
+/// A list's next primitive, a triangle set up in place.
+impl TriangleSlot for Vec<Prim> {
+    fn triangle_slot(&mut self, _: Rect) -> &mut Triangle {
+        self.push(Prim::Triangle(Triangle::BLANK));
+        match self.last_mut() {
+            Some(Prim::Triangle(t)) => t,
+            _ => unreachable!("a triangle was just pushed"),
+        }
+    }
 }
 
 impl Prim {

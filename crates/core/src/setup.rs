@@ -22,6 +22,18 @@ pub(crate) fn round_i64(v: f64) -> i64 {
     (v + (0.5 - f64::EPSILON / 4.0).copysign(v)) as i64
 }
 
+/// [`round_i64`] for |v| < 2⁵¹ and NaN (0, as there): a window coordinate in subpixels.
+/// Without `as i64`, which tests for NaN and saturates value by value: truncated, the
+/// integer added to 1.5 · 2⁵² is the low bits of the sum, so the vertices of a triangle
+/// round as one vector.
+#[inline(always)]
+fn snap(v: f64) -> i64 {
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    let v = if v.is_nan() { 0.0 } else { v };
+    let t = (v + (0.5 - f64::EPSILON / 4.0).copysign(v)).trunc();
+    ((t + MAGIC).to_bits() as i64).wrapping_sub(MAGIC.to_bits() as i64)
+}
+
 /// An edge function `E(x, y) = a·x + b·y + c` over subpixel coordinates relative to the
 /// triangle's origin; positive inside. [`Edge::bias`] is 0 for edges that own the pixels
 /// exactly on them (top and left edges) and 1 otherwise, so `E − bias ≥ 0` is the coverage
@@ -80,19 +92,34 @@ struct Weights([Plane; 3]);
 
 impl Weights {
     fn new(edges: &[Edge; 3], area: f64) -> Weights {
-        let weight = |e: &Edge| {
+        // Nine quotients by one divisor, in one loop so that they compile to vector
+        // divisions (the same quotients as one at a time).
+        let mut q = [0.0; 9];
+        for (q, e) in q.chunks_exact_mut(3).zip(edges) {
             let (a, b, c) = (e.a as f64, e.b as f64, e.c as f64);
-            Plane {
-                dx: a * ONE as f64 / area,
-                dy: b * ONE as f64 / area,
-                c: (a * HALF as f64 + b * HALF as f64 + c) / area,
-            }
+            q[0] = a * ONE as f64;
+            q[1] = b * ONE as f64;
+            q[2] = a * HALF as f64 + b * HALF as f64 + c;
+        }
+        for q in &mut q {
+            *q /= area;
+        }
+        let plane = |i: usize| Plane {
+            dx: q[3 * i],
+            dy: q[3 * i + 1],
+            c: q[3 * i + 2],
         };
-        Weights([weight(&edges[0]), weight(&edges[1]), weight(&edges[2])])
+        Weights([plane(0), plane(1), plane(2)])
     }
 }
 
 impl Plane {
+    const ZERO: Plane = Plane {
+        dx: 0.0,
+        dy: 0.0,
+        c: 0.0,
+    };
+
     /// The plane through the values `v` at the vertices: the weighted sum of the weight
     /// planes, exact up to f64 rounding.
     fn through(w: &Weights, v: [f64; 3]) -> Plane {
@@ -297,23 +324,62 @@ pub struct Triangle {
     pub shading: Shading,
 }
 
+impl Triangle {
+    /// A triangle covering nothing, for storage that [`triangle`] then fills.
+    pub const BLANK: Triangle = Triangle {
+        edges: [Edge { a: 0, b: 0, c: 0 }; 3],
+        bbox: Rect {
+            x0: 0,
+            y0: 0,
+            x1: 0,
+            y1: 0,
+        },
+        shading: Shading {
+            origin: (0, 0),
+            z: Plane::ZERO,
+            inv_w: Plane::ZERO,
+            color_w: [Plane::ZERO; 4],
+            flat: None,
+            coverage: None,
+            tex: None,
+            fog: Plane::ZERO,
+        },
+    };
+}
+
+/// Where set-up builds the triangles it keeps: in place, in the storage that keeps them.
+/// A triangle is some 300 bytes; built on set-up's stack and returned, it was copied
+/// three times on its way into the frame (a tenth of a lit scene's time, with a
+/// store-forwarding stall on the first copy).
+pub trait TriangleSlot {
+    /// Storage for a kept triangle that will cover `bbox`, to be overwritten.
+    fn triangle_slot(&mut self, bbox: Rect) -> &mut Triangle;
+}
+
+/// One triangle, for callers that take them one at a time.
+impl TriangleSlot for Option<Triangle> {
+    fn triangle_slot(&mut self, _: Rect) -> &mut Triangle {
+        self.insert(Triangle::BLANK)
+    }
+}
+
 /// Sets up a clipped triangle for rasterization inside `bounds` of a target with `depth`
-/// bits, or returns `None` when it is culled, has no area, or cannot touch `bounds`.
-/// `provoking` supplies the flat-shaded color. The triangle comes already wrapped as a
-/// primitive, built where the caller receives it rather than copied into one. Compiled
-/// also for AVX2 and SSE4.1 and chosen at run time, as the vertex and span loops are: the
-/// same f64 operations, so the same results.
+/// bits into a slot of `out`, or returns `false` (and takes no slot) when it is culled,
+/// has no area, or cannot touch `bounds`. `provoking` supplies the flat-shaded color.
+/// Compiled also for AVX2 and SSE4.1 and chosen at run time, as the vertex and span loops
+/// are: the same f64 operations, so the same results.
 #[cfg_attr(
     not(fuzzing),
     multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
 )]
-pub fn triangle<'v>(
+pub fn triangle<'v, 's>(
     state: &RenderState,
     v: [VertexRef<'v>; 3],
     provoking: VertexRef<'v>,
     bounds: Rect,
     depth: Option<DepthFormat>,
-) -> Option<Triangle> {
+    out: &'s mut dyn TriangleSlot,
+) -> bool {
     let vp = state.viewport;
     let (hw, hh) = (vp.width as f64 * 0.5, vp.height as f64 * 0.5);
     let (cx, cy) = (vp.x as f64 + hw, vp.y as f64 + hh);
@@ -321,38 +387,47 @@ pub fn triangle<'v>(
     // In a sample plane, the primitive moves so that pixel centers sample it at the
     // plane's sample position (exact: the offsets are on the subpixel grid).
     let [ox, oy] = state.sample.map_or([0, 0], |s| s.offset.map(|o| o as i64));
-    let mut win = [(0i64, 0i64); 3];
-    let mut z = [0f64; 3];
-    let mut inv_w = [0f64; 3];
-    for i in 0..3 {
-        let p = v[i].pos();
-        debug_assert!(p.w >= clip::W_MIN);
-        let iw = 1.0 / p.w as f64;
+    // The vertices as four lanes (the last a copy of the third), so that each step below
+    // is a vector operation for all of them: the divisions, the clamps, the roundings.
+    let p = [v[0].pos(), v[1].pos(), v[2].pos()];
+    debug_assert!(p.iter().all(|p| p.w >= clip::W_MIN));
+    let lanes = |c: usize| {
+        [
+            p[0][c] as f64,
+            p[1][c] as f64,
+            p[2][c] as f64,
+            p[2][c] as f64,
+        ]
+    };
+    let (px, py, pz, pw) = (lanes(0), lanes(1), lanes(2), lanes(3));
+    let (mut wx, mut wy, mut z, mut inv_w) = ([0i64; 4], [0i64; 4], [0f64; 4], [0f64; 4]);
+    for k in 0..4 {
+        let iw = 1.0 / pw[k];
         // Clipping bounds |x/w| and |y/w| by the guard band; the clamp only removes rounding
         // excess, and keeps a w near W_MIN from producing huge coordinates.
         let g = clip::GUARD as f64;
-        let x = (p.x as f64 * iw).clamp(-g, g) * hw + cx;
-        let y = (p.y as f64 * iw).clamp(-g, g) * hh + cy;
-        win[i] = (
-            round_i64(x * ONE as f64) - ox,
-            round_i64(y * ONE as f64) - oy,
-        );
-        z[i] = ((p.z as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
-        inv_w[i] = iw;
+        let x = (px[k] * iw).clamp(-g, g) * hw + cx;
+        let y = (py[k] * iw).clamp(-g, g) * hh + cy;
+        wx[k] = snap(x * ONE as f64) - ox;
+        wy[k] = snap(y * ONE as f64) - oy;
+        z[k] = ((pz[k] * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
+        inv_w[k] = iw;
     }
+    let win = [(wx[0], wy[0]), (wx[1], wy[1]), (wx[2], wy[2])];
+    let (z, inv_w) = ([z[0], z[1], z[2]], [inv_w[0], inv_w[1], inv_w[2]]);
     // Facing and culling need only the snapped vertices (the area is the same from any
     // origin), so culled triangles skip the bounding box and the planes.
     let area = (win[1].0 - win[0].0) * (win[2].1 - win[0].1)
         - (win[2].0 - win[0].0) * (win[1].1 - win[0].1);
     if area == 0 {
-        return None;
+        return false;
     }
     let ccw = area > 0;
     let front = ccw == (state.front_face == Winding::Ccw);
     match state.cull {
-        Some(CullFace::FrontAndBack) => return None,
-        Some(CullFace::Front) if front => return None,
-        Some(CullFace::Back) if !front => return None,
+        Some(CullFace::FrontAndBack) => return false,
+        Some(CullFace::Front) if front => return false,
+        Some(CullFace::Back) if !front => return false,
         _ => {}
     }
     // Pixel bounding box: pixel centers strictly inside the snapped extent.
@@ -374,7 +449,7 @@ pub fn triangle<'v>(
     }
     .intersect(bounds);
     if bbox.is_empty() {
-        return None;
+        return false;
     }
     // Work relative to the bounding box so every coordinate is small (see MAX_VIEWPORT_DIM).
     let (ox, oy) = (bbox.x0 as i64 * ONE, bbox.y0 as i64 * ONE);
@@ -413,15 +488,24 @@ pub fn triangle<'v>(
             v.back_color()
         }
     };
-    let flat = (state.shade_model == ShadeModel::Flat).then(|| color(provoking).to_array());
-    let mut color_w = [Plane::default(); 4];
-    if flat.is_none() {
+    // Stored field by field into the slot, so that each value is written once.
+    let t = out.triangle_slot(bbox);
+    t.edges = edges;
+    t.bbox = bbox;
+    let shading = &mut t.shading;
+    shading.origin = (bbox.x0, bbox.y0);
+    shading.z = z_plane;
+    shading.inv_w = through(inv_w);
+    shading.flat = (state.shade_model == ShadeModel::Flat).then(|| color(provoking).to_array());
+    if shading.flat.is_some() {
+        shading.color_w = [Plane::ZERO; 4];
+    } else {
         let c = [
             color(v[0]).to_array(),
             color(v[1]).to_array(),
             color(v[2]).to_array(),
         ];
-        for (ch, plane) in color_w.iter_mut().enumerate() {
+        for (ch, plane) in shading.color_w.iter_mut().enumerate() {
             *plane = through([
                 c[0][ch] as f64 * inv_w[0],
                 c[1][ch] as f64 * inv_w[1],
@@ -429,33 +513,21 @@ pub fn triangle<'v>(
             ]);
         }
     }
-    let mut triangle = Triangle {
-        edges,
-        bbox,
-        shading: Shading {
-            origin: (bbox.x0, bbox.y0),
-            z: z_plane,
-            inv_w: through(inv_w),
-            color_w,
-            flat,
-            coverage: None,
-            tex: None,
-            fog: Plane::default(),
-        },
-    };
+    shading.coverage = None;
+    (shading.tex, shading.fog) = (None, Plane::ZERO);
     // Checked here too: without fog or textures the call would build nothing. Assigned
-    // into the triangle rather than chosen beforehand: the chosen pair was stored and
+    // field by field rather than chosen as a pair first: the chosen pair was stored and
     // read back across two stores, a store-forwarding stall in every triangle's set-up.
     if state.fog.is_some() || state.textures.iter().any(Option::is_some) {
-        let planes = attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]));
-        (triangle.shading.tex, triangle.shading.fog) = planes;
+        (shading.tex, shading.fog) =
+            attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]));
     }
-    Some(triangle)
+    true
 }
 
 #[cfg(test)]
 mod tests {
-    use super::round_i64;
+    use super::{round_i64, snap};
 
     #[test]
     fn inline_rounding_matches_f64_round() {
@@ -488,6 +560,18 @@ mod tests {
         }
         for v in values {
             assert_eq!(round_i64(v), v.round() as i64, "{v:e}");
+            if v.is_nan() || v.abs() < (1u64 << 51) as f64 {
+                assert_eq!(snap(v), round_i64(v), "{v:e}");
+            }
+        }
+        // Ties and their neighbours at every scale a snapped coordinate takes.
+        for e in 0..51 {
+            let m = (1u64 << e) as f64;
+            for v in [m + 0.5, m - 0.5, m + 1.5, m.next_up() + 0.5] {
+                for v in [v, -v, v.next_up(), v.next_down()] {
+                    assert_eq!(snap(v), round_i64(v), "{v:e}");
+                }
+            }
         }
     }
 }

@@ -1193,3 +1193,52 @@ fn smooth_hints_trade_samples_for_error() {
     }
     eprintln!("{}", report.join("\n"));
 }
+
+/// A frame reused from flush to flush sets its triangles up over the primitives of the
+/// batches before (lines, points, flat then smooth triangles): the image is the one that
+/// fresh frames give.
+#[test]
+fn reused_primitive_storage_leaves_no_trace() {
+    let (w, h) = (40, 30);
+    let mut rng = Lcg(11);
+    let mut batch = |prim: Primitive, count: usize| {
+        let pos: Vec<f32> = (0..count * 3)
+            .map(|i| match i % 3 {
+                0 => rng.next() * 44.0 - 2.0,
+                1 => rng.next() * 34.0 - 2.0,
+                _ => 0.0,
+            })
+            .collect();
+        let col: Vec<f32> = (0..count * 4).map(|_| rng.next()).collect();
+        (prim, bytes(&pos), bytes(&col), count)
+    };
+    let batches = [
+        batch(Primitive::Lines, 60),
+        batch(Primitive::Points, 30),
+        batch(Primitive::Triangles, 90),
+        batch(Primitive::Triangles, 30),
+    ];
+    let smooth = pixel_state(w, h);
+    let mut flat = smooth.clone();
+    flat.shade_model = ShadeModel::Flat;
+    let states = [&smooth, &smooth, &flat, &smooth];
+    let calls: Vec<DrawCall<'_>> = batches
+        .iter()
+        .map(|(prim, p, c, n)| colored_call(*prim, p, c, *n))
+        .collect();
+    let mut fresh = target(w as u32, h as u32);
+    for (s, call) in states.iter().zip(&calls) {
+        render(s, call, &mut fresh).unwrap();
+    }
+    let mut reused = target(w as u32, h as u32);
+    let mut frame = Frame::for_target(&reused);
+    for (s, call) in states.iter().zip(&calls) {
+        record(s, call, &mut frame).unwrap();
+        frame.flush(&mut reused, 1);
+    }
+    assert!(reused.color() == fresh.color());
+    assert!(
+        count(&fresh, [0, 0, 0, 0]) < (w * h) as usize / 2,
+        "the batches draw"
+    );
+}

@@ -840,25 +840,24 @@ fn st_lanes(ts: &UnitCoords, i0: usize) -> (Lane<f32>, Lane<f32>, Lane<f32>) {
     (s, t, r)
 }
 
-/// Wrapped texel indices of integer coordinates (`Wrap::index`, one decision per group).
+/// Wrapped texel indices of integer coordinates (`Wrap::index`, one decision per group:
+/// `wrap` and `n` are the same for every lane, so each arm's loop vectorizes).
 #[inline(always)]
 fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
-    if n & (n - 1) != 0 {
-        // `OES_texture_npot`: a division per lane, off the power-of-two routes.
-        i.iter_mut().for_each(|i| *i = wrap.index_npot(*i, n));
-        return;
-    }
-    // One match per group: `wrap` is the same for every lane.
-    match wrap {
-        Wrap::Repeat => i
-            .iter_mut()
-            .for_each(|i| *i = Wrap::Repeat.index_pot(*i, n)),
-        Wrap::ClampToEdge => i
-            .iter_mut()
-            .for_each(|i| *i = Wrap::ClampToEdge.index_pot(*i, n)),
-        Wrap::MirroredRepeat => i
-            .iter_mut()
-            .for_each(|i| *i = Wrap::MirroredRepeat.index_pot(*i, n)),
+    use Wrap::*;
+    let lanes = i.iter_mut();
+    if n & (n - 1) == 0 {
+        match wrap {
+            Repeat => lanes.for_each(|i| *i = Repeat.index_pot(*i, n)),
+            ClampToEdge => lanes.for_each(|i| *i = ClampToEdge.index_pot(*i, n)),
+            MirroredRepeat => lanes.for_each(|i| *i = MirroredRepeat.index_pot(*i, n)),
+        }
+    } else {
+        match wrap {
+            Repeat => lanes.for_each(|i| *i = Repeat.index_npot(*i, n)),
+            ClampToEdge => lanes.for_each(|i| *i = ClampToEdge.index_npot(*i, n)),
+            MirroredRepeat => lanes.for_each(|i| *i = MirroredRepeat.index_npot(*i, n)),
+        }
     }
 }
 

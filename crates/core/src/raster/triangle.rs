@@ -40,26 +40,27 @@ impl Quotient {
         Quotient { q, r, d, dq, dr }
     }
 
+    /// A bound that stays at `q`.
+    fn fixed(q: i64) -> Quotient {
+        Quotient {
+            q,
+            r: 0,
+            d: 1,
+            dq: 0,
+            dr: 0,
+        }
+    }
+
+    /// The next row's quotient. Without a branch: whether the remainder carries is as
+    /// unpredictable as a rounding.
     #[inline]
     fn step(&mut self) {
         self.q += self.dq;
         self.r += self.dr;
-        if self.r >= self.d {
-            self.q += 1;
-            self.r -= self.d;
-        }
+        let carry = self.r >= self.d;
+        self.q += i64::from(carry);
+        self.r -= if carry { self.d } else { 0 };
     }
-}
-
-/// What one edge allows on a row, as a function of the pixel index k = x − x0.
-#[derive(Clone, Copy)]
-enum Bound {
-    /// k ≥ −q: the ceiling ⌈−n/d⌉ is the negated floor ⌊n/d⌋.
-    Low(Quotient),
-    /// k ≤ q.
-    High(Quotient),
-    /// Every pixel or none, by the sign of the edge function (`base`, growing by `dbase`).
-    Row { base: i64, dbase: i64 },
 }
 
 /// Bounding boxes at most this many pixels wide test each pixel center against the edges
@@ -120,48 +121,52 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
         narrow_spans(t, y0..y1, ry, emit);
         return;
     }
-    // E(k) = base + k·step ≥ 0 on the first row; base grows by b·ONE per row.
-    // Indexed rather than `array::map`, whose closure stays a call.
-    let bound = |e: &super::super::setup::Edge| {
+    // E(k) = base + k·step ≥ 0 on the first row; base grows by b·ONE per row. A rising
+    // edge (step > 0) allows k ≥ −q with q = ⌊base/step⌋, a falling one k ≤ ⌊base/−step⌋.
+    // A triangle has one or two of each; padded to two of each with bounds that allow
+    // every pixel, the row loop is the same for every triangle, without a branch per edge
+    // (which kind an edge is changes from triangle to triangle). A horizontal edge allows
+    // whole rows or none, so it limits the rows instead.
+    let (mut lows, mut highs) = ([Quotient::fixed(0); 2], [Quotient::fixed(width - 1); 2]);
+    let (mut n_low, mut n_high) = (0, 0);
+    let mut kept = y0..y1;
+    for e in &t.edges {
         let base = e.at_center((x0 - ox) as i64, ry) - e.bias();
-        // A single row never steps (common: most small triangles meet a band in a row or
-        // two), so it leaves the step at 0.
-        let dbase = if y1 - y0 > 1 {
-            (e.b as i64) << SUBPIXEL_BITS
-        } else {
-            0
-        };
+        let dbase = (e.b as i64) << SUBPIXEL_BITS;
         let step = (e.a as i64) << SUBPIXEL_BITS;
-        match step {
-            // k ≥ ⌈−base / step⌉ = −⌊base / step⌋
-            s if s > 0 => Bound::Low(Quotient::new(base, dbase, s)),
-            // k ≤ ⌊base / −step⌋
-            s if s < 0 => Bound::High(Quotient::new(base, dbase, -s)),
-            _ => Bound::Row { base, dbase },
-        }
-    };
-    let mut bounds = [bound(&t.edges[0]), bound(&t.edges[1]), bound(&t.edges[2])];
-    for y in y0..y1 {
-        let (mut lo, mut hi) = (0i64, width);
-        for b in &mut bounds {
-            match b {
-                Bound::Low(q) => {
-                    lo = lo.max(-q.q);
-                    q.step();
-                }
-                Bound::High(q) => {
-                    hi = hi.min(q.q + 1);
-                    q.step();
-                }
-                Bound::Row { base, dbase } => {
-                    if *base < 0 {
-                        lo = width;
-                    }
-                    *base += *dbase;
-                }
+        // A single row never steps (common: most small triangles meet a band in a row or
+        // two), so it needs no division for the step.
+        let dn = if y1 - y0 > 1 { dbase } else { 0 };
+        if step > 0 {
+            if let Some(b) = lows.get_mut(n_low) {
+                *b = Quotient::new(base, dn, step);
             }
+            n_low += 1;
+        } else if step < 0 {
+            if let Some(b) = highs.get_mut(n_high) {
+                *b = Quotient::new(base, dn, -step);
+            }
+            n_high += 1;
+        } else {
+            // base + i·dbase ≥ 0 on row y0 + i: from −⌊base/dbase⌋ on when it grows, up to
+            // ⌊base/−dbase⌋ when it falls, every row or none when it stays.
+            let (first, last) = match dbase.signum() {
+                1 => (-base.div_euclid(dbase), i64::MAX),
+                -1 => (0, base.div_euclid(-dbase)),
+                _ if base >= 0 => (0, i64::MAX),
+                _ => (0, -1),
+            };
+            let row = |i: i64| (y0 as i64).saturating_add(i).clamp(y0 as i64, y1 as i64) as i32;
+            kept = kept.start.max(row(first))..kept.end.min(row(last.saturating_add(1)));
         }
-        if lo < hi {
+    }
+    for y in y0..y1 {
+        let lo = 0.max(-lows[0].q).max(-lows[1].q);
+        let hi = width.min(highs[0].q + 1).min(highs[1].q + 1);
+        for q in lows.iter_mut().chain(&mut highs) {
+            q.step();
+        }
+        if lo < hi && kept.contains(&y) {
             emit(Span {
                 y,
                 x0: x0 + lo as i32,
@@ -200,14 +205,22 @@ mod tests {
             // edges of the bounds (which cut the bounding box).
             let size = if n % 2 == 0 { 0.1 } else { 0.6 };
             let (cx, cy) = (next() * 2.0 - 1.2, next() * 2.0 - 1.2);
-            let mut corner = || {
-                let p = Vec4::new(cx + size * next(), cy + size * next(), 0.0, 1.0);
-                layout.pack(&ClipVertex::new(p, Vec4::ONE))
-            };
-            let f = [corner(), corner(), corner()];
+            let mut corner = || Vec4::new(cx + size * next(), cy + size * next(), 0.0, 1.0);
+            let mut p = [corner(), corner(), corner()];
+            // Every third triangle has a horizontal edge through a row of pixel centers,
+            // above or below the third vertex: an edge that limits rows rather than
+            // pixels, and owns the centers on it or not by the top-left rule.
+            if n % 3 == 2 {
+                let row = ((p[1].y + 1.0) * h as f32 / 2.0).floor();
+                p[1].y = (2.0 * row + 1.0) / h as f32 - 1.0;
+                p[2].y = p[1].y;
+            }
+            let f = p.map(|p| layout.pack(&ClipVertex::new(p, Vec4::ONE)));
             let v = f.each_ref().map(|f| layout.view(f));
             let bounds = Rect::new(2, 3, w - 7, h - 5);
-            let Some(t) = setup::triangle(&state, v, v[2], bounds, None) else {
+            let mut kept = None;
+            setup::triangle(&state, v, v[2], bounds, None, &mut kept);
+            let Some(t) = kept else {
                 continue;
             };
             let mut got = Vec::new();
