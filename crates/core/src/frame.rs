@@ -20,7 +20,7 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use super::fragment::FragmentKey;
 use super::pool::{self, thread_count, together, Spread};
 use super::raster::Prim;
-use super::setup::Triangle;
+use super::setup::{Triangle, TriangleSlot};
 use super::target::{BandMut, Rect, SharedTarget, Target, TargetFormat};
 
 /// Rows per band: small enough that several bands per thread balance the load, large
@@ -158,8 +158,12 @@ impl Frame {
     /// Records `p` with fragment state `key`.
     #[inline]
     pub fn prim(&mut self, p: Prim, key: u32) {
-        let b = p.bbox();
-        *self.next_slot(b, key) = p;
+        let i = self.bin(p.bbox(), key);
+        if i == self.prims.len() {
+            self.prims.push(p);
+        } else {
+            self.prims[i] = p;
+        }
     }
 
     /// [`Frame::prim`] for each of `prims` in order, moved in as one block.
@@ -175,31 +179,25 @@ impl Frame {
     }
 
     /// [`Frame::prim`] for a triangle that covers `bbox`, binned now and then set up in
-    /// the storage returned (`setup::TriangleSlot`).
+    /// the storage returned (`setup::TriangleSlot`): an old primitive's where there is one.
     #[inline]
     pub fn triangle_slot(&mut self, bbox: Rect, key: u32) -> &mut Triangle {
-        let slot = self.next_slot(bbox, key);
-        if !matches!(slot, Prim::Triangle(_)) {
-            *slot = Prim::Triangle(Triangle::BLANK);
-        }
-        match slot {
-            Prim::Triangle(t) => t,
-            _ => unreachable!("the slot holds a triangle"),
+        let i = self.bin(bbox, key);
+        if i == self.prims.len() {
+            self.prims.triangle_slot(bbox)
+        } else {
+            self.prims[i].reuse_as_triangle()
         }
     }
 
-    /// Records the next primitive, which covers `bbox`, and returns its storage: an old
-    /// primitive, or a blank triangle where there is none.
+    /// Bins the next primitive, which covers `bbox`, and returns its index.
     #[inline]
-    fn next_slot(&mut self, bbox: Rect, key: u32) -> &mut Prim {
+    fn bin(&mut self, bbox: Rect, key: u32) -> usize {
         let i = self.live;
         self.record(bbox.y0, bbox.y1, Command::Prim(i as u32));
         self.prim_keys.push(key);
         self.live += 1;
-        if i == self.prims.len() {
-            self.prims.push(Prim::Triangle(Triangle::BLANK));
-        }
-        &mut self.prims[i]
+        i
     }
 
     pub fn clear_color(&mut self, rect: Rect, word: u32, keep: u32) {

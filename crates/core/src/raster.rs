@@ -33,14 +33,24 @@ pub enum Prim {
 impl TriangleSlot for Vec<Prim> {
     fn triangle_slot(&mut self, _: Rect) -> &mut Triangle {
         self.push(Prim::Triangle(Triangle::BLANK));
-        match self.last_mut() {
-            Some(Prim::Triangle(t)) => t,
-            _ => unreachable!("a triangle was just pushed"),
-        }
+        let last = self.len() - 1;
+        self[last].reuse_as_triangle()
     }
 }
 
 impl Prim {
+    /// This storage as a triangle for set-up to overwrite: the triangle it holds, or a
+    /// blank one in place of a line or a point.
+    pub fn reuse_as_triangle(&mut self) -> &mut Triangle {
+        if !matches!(self, Prim::Triangle(_)) {
+            *self = Prim::Triangle(Triangle::BLANK);
+        }
+        match self {
+            Prim::Triangle(t) => t,
+            _ => unreachable!("the storage holds a triangle"),
+        }
+    }
+
     /// The pixels the primitive may produce fragments for.
     pub fn bbox(&self) -> Rect {
         match self {

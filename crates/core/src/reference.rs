@@ -18,7 +18,7 @@ use super::TEXTURE_UNITS;
 mod compare;
 mod fragment;
 mod lines_points;
-mod texturing;
+pub(crate) mod texturing;
 pub use compare::{compare, ErrorStats};
 
 #[derive(Clone, Copy, Debug)]

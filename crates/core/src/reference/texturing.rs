@@ -93,7 +93,7 @@ fn wrap(w: Wrap, c: f64, n: f64) -> f64 {
 
 /// Texel index i from a texel-space value u in a level of n texels, with the wrap mode
 /// applied to indices (as the specification does for LINEAR's i0, i1).
-fn index(w: Wrap, i: i64, n: i64) -> usize {
+pub(crate) fn index(w: Wrap, i: i64, n: i64) -> usize {
     (match w {
         Wrap::Repeat => i.rem_euclid(n),
         Wrap::ClampToEdge => i.clamp(0, n - 1),

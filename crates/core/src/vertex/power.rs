@@ -68,22 +68,14 @@ fn estrin8(c: &[f64; 8], x: f64) -> f64 {
     (pairs[0] + x2 * pairs[1]) + x4 * (pairs[2] + x2 * pairs[3])
 }
 
-/// [`estrin8`] for k < 12: four levels, x⁸ the last.
+/// [`estrin8`] for k < 12: the first eight terms as there, the last four added at x⁸.
 #[inline(always)]
 fn estrin12(c: &[f64; 12], x: f64) -> f64 {
+    let [c0, c1, c2, c3, c4, c5, c6, c7, c8, c9, c10, c11] = *c;
     let x2 = x * x;
-    let x4 = x2 * x2;
-    let x8 = x4 * x4;
-    let pairs = [
-        c[0] + x * c[1],
-        c[2] + x * c[3],
-        c[4] + x * c[5],
-        c[6] + x * c[7],
-        c[8] + x * c[9],
-        c[10] + x * c[11],
-    ];
-    let low = (pairs[0] + x2 * pairs[1]) + x4 * (pairs[2] + x2 * pairs[3]);
-    low + x8 * (pairs[4] + x2 * pairs[5])
+    let x8 = x2 * x2 * (x2 * x2);
+    let high = (c8 + x * c9) + x2 * (c10 + x * c11);
+    estrin8(&[c0, c1, c2, c3, c4, c5, c6, c7], x) + x8 * high
 }
 
 /// x^y for x ≥ 0 and finite y ≥ 0, as `powf` defines it: x⁰ = 1 for every x (NaN and ∞
