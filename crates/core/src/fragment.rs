@@ -14,10 +14,11 @@
 //! `GL_SAMPLE_ALPHA_TO_ONE`) are skipped: every config has `EGL_SAMPLE_BUFFERS` 0, and the
 //! specification skips them then (ES 1.1 §4.1.3).
 
+use std::ops::Range;
 use std::sync::Arc;
 
 use super::multisample::SamplePass;
-use super::raster::Span;
+use super::raster::{Prim, Span};
 use super::setup::{Shading, TexPlanes};
 use super::state::{
     AlphaTest, Blend, BlendEquation, BlendFactor, CompareFunc, LogicOp, Quality, RenderState,
@@ -552,27 +553,59 @@ impl FragmentKey {
         key
     }
 
-    /// Shades the pixels of `span`, which lies inside the band and the primitive.
-    pub fn shade(&self, t: &Shading, span: Span, band: &mut BandMut<'_>) {
+    /// Shades the pixels of primitive `p` on rows `rows`, which lie inside the band.
+    pub fn shade(&self, p: &Prim, rows: Range<i32>, band: &mut BandMut<'_>) {
+        let t = p.shading();
+        if let (Route::Simple { .. }, None) = (self.route, &t.coverage) {
+            return p.spans(rows, |span| self.simple(t, span, band));
+        }
+        // The textured and the general routes take a primitive's spans in one call, so the
+        // route and its instruction set are chosen once for them all (sprites 20.0 → 18.5
+        // ms). A primitive is convex: a span a row, and a band has 16 rows.
+        let mut spans = [Span { y: 0, x0: 0, x1: 0 }; 16];
+        let mut n = 0;
+        p.spans(rows, |span| {
+            if n == spans.len() {
+                self.spans(t, &spans, band);
+                n = 0;
+            }
+            spans[n] = span;
+            n += 1;
+        });
+        self.spans(t, &spans[..n], band);
+    }
+
+    /// A span of a primitive that takes the `Simple` route.
+    #[inline]
+    fn simple(&self, t: &Shading, span: Span, band: &mut BandMut<'_>) {
+        let Route::Simple {
+            depth,
+            smooth,
+            blend,
+        } = self.route
+        else {
+            unreachable!("called for the simple route")
+        };
+        match (depth, smooth, blend) {
+            (false, false, false) => simple::<false, false, false>(self, t, span, band),
+            (false, false, true) => simple::<false, false, true>(self, t, span, band),
+            (false, true, false) => simple::<false, true, false>(self, t, span, band),
+            (false, true, true) => simple::<false, true, true>(self, t, span, band),
+            (true, false, false) => simple::<true, false, false>(self, t, span, band),
+            (true, false, true) => simple::<true, false, true>(self, t, span, band),
+            (true, true, false) => simple::<true, true, false>(self, t, span, band),
+            (true, true, true) => simple::<true, true, true>(self, t, span, band),
+        }
+    }
+
+    /// Spans of one primitive on the textured or the general route.
+    fn spans(&self, t: &Shading, spans: &[Span], band: &mut BandMut<'_>) {
+        // An antialiased primitive always takes the general route.
         if t.coverage.is_some() {
-            return general(self, t, span, band);
+            return general(self, t, spans, band);
         }
         match self.route {
             Route::Nothing => {}
-            Route::Simple {
-                depth,
-                smooth,
-                blend,
-            } => match (depth, smooth, blend) {
-                (false, false, false) => simple::<false, false, false>(self, t, span, band),
-                (false, false, true) => simple::<false, false, true>(self, t, span, band),
-                (false, true, false) => simple::<false, true, false>(self, t, span, band),
-                (false, true, true) => simple::<false, true, true>(self, t, span, band),
-                (true, false, false) => simple::<true, false, false>(self, t, span, band),
-                (true, false, true) => simple::<true, false, true>(self, t, span, band),
-                (true, true, false) => simple::<true, true, false>(self, t, span, band),
-                (true, true, true) => simple::<true, true, true>(self, t, span, band),
-            },
             Route::Textured {
                 filter,
                 depth,
@@ -581,12 +614,12 @@ impl FragmentKey {
                 macro_rules! by_filter {
                     ($d:literal, $b:literal) => {
                         match filter {
-                            F_NONE => textured::<F_NONE, $d, $b>(self, t, span, band),
-                            F_NEAREST => textured::<F_NEAREST, $d, $b>(self, t, span, band),
-                            F_BILINEAR => textured::<F_BILINEAR, $d, $b>(self, t, span, band),
-                            F_TRILINEAR => textured::<F_TRILINEAR, $d, $b>(self, t, span, band),
-                            F_LOD => textured::<F_LOD, $d, $b>(self, t, span, band),
-                            _ => textured::<F_MULTI, $d, $b>(self, t, span, band),
+                            F_NONE => textured::<F_NONE, $d, $b>(self, t, spans, band),
+                            F_NEAREST => textured::<F_NEAREST, $d, $b>(self, t, spans, band),
+                            F_BILINEAR => textured::<F_BILINEAR, $d, $b>(self, t, spans, band),
+                            F_TRILINEAR => textured::<F_TRILINEAR, $d, $b>(self, t, spans, band),
+                            F_LOD => textured::<F_LOD, $d, $b>(self, t, spans, band),
+                            _ => textured::<F_MULTI, $d, $b>(self, t, spans, band),
                         }
                     };
                 }
@@ -597,7 +630,7 @@ impl FragmentKey {
                     (true, true) => by_filter!(true, true),
                 }
             }
-            Route::General => general(self, t, span, band),
+            Route::Simple { .. } | Route::General => general(self, t, spans, band),
         }
     }
 }
@@ -713,12 +746,21 @@ impl SpanInterp {
     }
 }
 
-/// The routine for every key: each enabled operation, per pixel, in the specification's order.
+/// The routine for every key: each enabled operation, per pixel, in the specification's
+/// order, over a primitive's spans in a band.
 #[cfg_attr(
     not(fuzzing),
     multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
 )]
-fn general<'a>(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'a>) {
+fn general<'a>(k: &FragmentKey, t: &Shading, spans: &[Span], band: &mut BandMut<'a>) {
+    for &span in spans {
+        general_span(k, t, span, band);
+    }
+}
+
+/// One span of [`general`].
+#[inline(always)]
+fn general_span(k: &FragmentKey, t: &Shading, span: Span, band: &mut BandMut<'_>) {
     let interp = if t.flat.is_some() {
         SpanInterp::depth_only(t, span)
     } else {

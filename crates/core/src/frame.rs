@@ -46,11 +46,7 @@ pub struct Frame {
     format: TargetFormat,
     width: u32,
     height: u32,
-    /// The first `live` are the recorded primitives. The rest are kept from earlier
-    /// batches: a triangle is set up over an old one ([`Frame::triangle_slot`]) rather
-    /// than over a blank written first.
-    prims: Vec<Prim>,
-    live: usize,
+    prims: PrimList,
     /// The fragment key of each primitive, apart so that a primitive moves into `prims`
     /// straight from where it was built instead of through a tuple.
     prim_keys: Vec<u32>,
@@ -65,6 +61,44 @@ pub struct Frame {
     /// The frame of the last finished batch, emptied, to record into after the next
     /// handover (its lists keep their capacity).
     spare: Option<Box<Frame>>,
+    /// Lists of primitives set up apart, kept for [`Frame::spare_list`].
+    lists: Vec<PrimList>,
+}
+
+/// Primitives in order, in storage kept from use to use: the first `live` are the list's,
+/// the rest old ones, which a triangle is set up over ([`TriangleSlot`]) rather than over a
+/// blank written first. The frame's own list, and a piece's set up on a helper thread for
+/// [`Frame::append`].
+#[derive(Default)]
+pub struct PrimList {
+    prims: Vec<Prim>,
+    live: usize,
+}
+
+impl PrimList {
+    /// Stores `p` as the next primitive.
+    pub fn push(&mut self, p: Prim) {
+        match self.prims.get_mut(self.live) {
+            Some(old) => *old = p,
+            None => self.prims.push(p),
+        }
+        self.live += 1;
+    }
+
+    pub fn as_slice(&self) -> &[Prim] {
+        &self.prims[..self.live]
+    }
+}
+
+/// The list's next primitive, a triangle set up in place.
+impl TriangleSlot for PrimList {
+    fn triangle_slot(&mut self, _: Rect) -> &mut Triangle {
+        if self.live == self.prims.len() {
+            self.prims.push(Prim::Triangle(Triangle::BLANK));
+        }
+        self.live += 1;
+        self.prims[self.live - 1].reuse_as_triangle()
+    }
 }
 
 /// A batch handed to the workers: its frame comes back here, emptied, when it has been
@@ -86,8 +120,7 @@ impl Frame {
             format,
             width,
             height,
-            prims: Vec::new(),
-            live: 0,
+            prims: PrimList::default(),
             prim_keys: Vec::new(),
             keys: Vec::new(),
             bands: vec![Vec::new(); height.div_ceil(BAND_ROWS) as usize],
@@ -95,6 +128,7 @@ impl Frame {
             planes: Vec::new(),
             behind: None,
             spare: None,
+            lists: Vec::new(),
         }
     }
 
@@ -131,7 +165,7 @@ impl Frame {
 
     /// True when the frame holds enough work that it should be flushed before more is added.
     pub fn is_full(&self) -> bool {
-        self.live >= MAX_PENDING || self.planes.iter().any(Frame::is_full)
+        self.prims.live >= MAX_PENDING || self.planes.iter().any(Frame::is_full)
     }
 
     /// Registers the fragment state for the primitives that follow, returning its number.
@@ -158,46 +192,53 @@ impl Frame {
     /// Records `p` with fragment state `key`.
     #[inline]
     pub fn prim(&mut self, p: Prim, key: u32) {
-        let i = self.bin(p.bbox(), key);
-        if i == self.prims.len() {
-            self.prims.push(p);
-        } else {
-            self.prims[i] = p;
-        }
+        self.bin(p.bbox(), key);
+        self.prims.push(p);
     }
 
-    /// [`Frame::prim`] for each of `prims` in order, moved in as one block.
-    pub fn append(&mut self, mut prims: Vec<Prim>, key: u32) {
-        for (k, p) in prims.iter().enumerate() {
+    /// [`Frame::prim`] for each primitive of `list` in order, which is left empty. The
+    /// primitives are exchanged with old ones of the frame's storage rather than moved, so
+    /// that neither storage is allocated or dropped from batch to batch.
+    pub fn append(&mut self, list: &mut PrimList, key: u32) {
+        let at = self.prims.live;
+        for (k, p) in list.as_slice().iter().enumerate() {
             let b = p.bbox();
-            self.record(b.y0, b.y1, Command::Prim((self.live + k) as u32));
+            self.record(b.y0, b.y1, Command::Prim((at + k) as u32));
         }
-        self.prims.truncate(self.live);
-        self.prims.append(&mut prims);
-        self.live = self.prims.len();
-        self.prim_keys.resize(self.live, key);
+        let n = list.live;
+        let old = &mut self.prims.prims[at..];
+        let swapped = old.len().min(n);
+        old[..swapped].swap_with_slice(&mut list.prims[..swapped]);
+        self.prims.prims.extend(list.prims.drain(swapped..n));
+        self.prims.live += n;
+        list.live = 0;
+        self.prim_keys.resize(self.prims.live, key);
+    }
+
+    /// An empty list for [`Frame::append`], with the storage of one appended before.
+    pub fn spare_list(&mut self) -> PrimList {
+        self.lists.pop().unwrap_or_default()
+    }
+
+    /// Keeps `list`'s storage for [`Frame::spare_list`].
+    pub fn keep_list(&mut self, list: PrimList) {
+        self.lists.push(list);
     }
 
     /// [`Frame::prim`] for a triangle that covers `bbox`, binned now and then set up in
     /// the storage returned (`setup::TriangleSlot`): an old primitive's where there is one.
     #[inline]
     pub fn triangle_slot(&mut self, bbox: Rect, key: u32) -> &mut Triangle {
-        let i = self.bin(bbox, key);
-        if i == self.prims.len() {
-            self.prims.triangle_slot(bbox)
-        } else {
-            self.prims[i].reuse_as_triangle()
-        }
+        self.bin(bbox, key);
+        self.prims.triangle_slot(bbox)
     }
 
-    /// Bins the next primitive, which covers `bbox`, and returns its index.
+    /// Bins the next primitive, which covers `bbox`.
     #[inline]
-    fn bin(&mut self, bbox: Rect, key: u32) -> usize {
-        let i = self.live;
+    fn bin(&mut self, bbox: Rect, key: u32) {
+        let i = self.prims.live;
         self.record(bbox.y0, bbox.y1, Command::Prim(i as u32));
         self.prim_keys.push(key);
-        self.live += 1;
-        i
     }
 
     pub fn clear_color(&mut self, rect: Rect, word: u32, keep: u32) {
@@ -295,6 +336,7 @@ impl Frame {
             None => Frame::new(self.width, self.height, self.format),
         };
         let mut full = std::mem::replace(self, empty);
+        self.lists = std::mem::take(&mut full.lists);
         let behind = Arc::new(Behind::default());
         let signal = behind.clone();
         let job = move |spread: Spread<'_>| {
@@ -359,7 +401,7 @@ impl Frame {
 
     /// Forgets what was recorded, keeping the lists' capacity.
     fn clear(&mut self) {
-        self.live = 0;
+        self.prims.live = 0;
         self.prim_keys.clear();
         self.keys.clear();
         self.bands.iter_mut().for_each(Vec::clear);
@@ -371,10 +413,9 @@ impl Frame {
         for c in cmds {
             match *c {
                 Command::Prim(i) => {
-                    let p = &self.prims[i as usize];
+                    let p = &self.prims.prims[i as usize];
                     let key = &self.keys[self.prim_keys[i as usize] as usize];
-                    let shading = p.shading();
-                    p.spans(rows.clone(), |span| key.shade(shading, span, band));
+                    key.shade(p, rows.clone(), band);
                 }
                 Command::ClearColor { rect, word, keep } => band.clear_color(rect, word, keep),
                 Command::ClearDepth { rect, value } => band.clear_depth(rect, value),

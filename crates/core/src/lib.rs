@@ -136,32 +136,46 @@ fn record_pieces(
     let pieces = pieces(draw);
     let threads = pool::thread_count().min(pieces.len());
     if threads <= 1 {
-        return record_serially(state, &pieces, frame, &mut make_room, key, bounds, depth);
+        return record_serially(
+            state,
+            &pieces,
+            frame,
+            &mut make_room,
+            &mut key,
+            bounds,
+            depth,
+        );
     }
-    let collect = |piece: &DrawCall<'_>| {
-        let mut prims = Vec::with_capacity(piece.indices.len());
-        set_up(state, piece, bounds, depth, &mut prims).map(|()| prims)
-    };
     for batch in pieces.chunks(threads) {
-        // Each piece's primitives land in its own slot, binned below in piece order.
-        type Slot = Mutex<Option<Result<Vec<raster::Prim>, OutOfMemory>>>;
-        let slots: Vec<Slot> = batch.iter().map(|_| Mutex::new(None)).collect();
+        // While the workers rasterize a frame behind, the cores are theirs: this batch is
+        // set up here alone (measured: lit-vbo at 2 threads a third slower with set-up
+        // threads crowding them, and as slow with the rasterizing workers taking pieces),
+        // straight into the frame.
+        if frame.rasterizing() {
+            record_serially(state, batch, frame, &mut make_room, &mut key, bounds, depth)?;
+            continue;
+        }
+        // Each piece's primitives land in its own list, binned below in piece order.
+        type Slot = Mutex<(frame::PrimList, Option<Result<(), OutOfMemory>>)>;
+        let slots: Vec<Slot> = batch
+            .iter()
+            .map(|_| Mutex::new((frame.spare_list(), None)))
+            .collect();
         let next = AtomicUsize::new(0);
         let work = || loop {
             let k = next.fetch_add(1, Ordering::Relaxed);
             let Some(piece) = batch.get(k) else { break };
-            let prims = collect(piece);
-            *slots[k].lock().unwrap_or_else(|e| e.into_inner()) = Some(prims);
+            let mut slot = slots[k].lock().unwrap_or_else(|e| e.into_inner());
+            let (list, result) = &mut *slot;
+            *result = Some(set_up(state, piece, bounds, depth, list));
         };
-        // While the workers rasterize a frame behind, the cores are theirs: this batch is
-        // set up here alone (measured: lit-vbo at 2 threads a third slower with set-up
-        // threads crowding them, and as slow with the rasterizing workers taking pieces).
-        let helpers = if frame.rasterizing() { 1 } else { threads };
-        pool::together(helpers, work);
+        pool::together(threads, work);
         for slot in slots {
             make_room(frame, &mut key);
-            let piece = slot.into_inner().unwrap_or_else(|e| e.into_inner());
-            frame.append(piece.expect("every piece of the batch was set up")?, key);
+            let (mut list, result) = slot.into_inner().unwrap_or_else(|e| e.into_inner());
+            result.expect("every piece of the batch was set up")?;
+            frame.append(&mut list, key);
+            frame.keep_list(list);
         }
     }
     Ok(())
@@ -174,12 +188,13 @@ fn record_serially(
     pieces: &[DrawCall<'_>],
     frame: &mut Frame,
     make_room: &mut dyn FnMut(&mut Frame, &mut u32),
-    mut key: u32,
+    key: &mut u32,
     bounds: Rect,
     depth: Option<DepthFormat>,
 ) -> Result<(), OutOfMemory> {
     for piece in pieces {
-        make_room(frame, &mut key);
+        make_room(frame, key);
+        let key = *key;
         set_up(state, piece, bounds, depth, &mut Binned { frame, key })?;
     }
     Ok(())
@@ -192,9 +207,9 @@ trait Sink: setup::TriangleSlot {
 }
 
 /// A piece's own list, binned later.
-impl Sink for Vec<raster::Prim> {
+impl Sink for frame::PrimList {
     fn push(&mut self, p: raster::Prim) {
-        Vec::push(self, p);
+        frame::PrimList::push(self, p);
     }
 }
 

@@ -5,7 +5,7 @@ pub mod line;
 pub mod point;
 pub mod triangle;
 
-use super::setup::{Shading, Triangle, TriangleSlot};
+use super::setup::{Shading, Triangle};
 use super::target::Rect;
 
 pub use line::Line;
@@ -27,15 +27,6 @@ pub enum Prim {
     Triangle(Triangle),
     Line(Line),
     Point(Point),
-}
-
-/// A list's next primitive, a triangle set up in place.
-impl TriangleSlot for Vec<Prim> {
-    fn triangle_slot(&mut self, _: Rect) -> &mut Triangle {
-        self.push(Prim::Triangle(Triangle::BLANK));
-        let last = self.len() - 1;
-        self[last].reuse_as_triangle()
-    }
 }
 
 impl Prim {

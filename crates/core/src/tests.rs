@@ -1195,28 +1195,36 @@ fn smooth_hints_trade_samples_for_error() {
 }
 
 /// A frame reused from flush to flush sets its triangles up over the primitives of the
-/// batches before (lines, points, flat then smooth triangles): the image is the one that
-/// fresh frames give.
+/// batches before (lines, points, flat then smooth triangles), and so do the lists that
+/// the pieces of a long draw are set up in on several threads: the image is the one that
+/// fresh frames give. Each draw is cut into three pieces (`PIECE`).
 #[test]
 fn reused_primitive_storage_leaves_no_trace() {
     let (w, h) = (40, 30);
     let mut rng = Lcg(11);
-    let mut batch = |prim: Primitive, count: usize| {
-        let pos: Vec<f32> = (0..count * 3)
-            .map(|i| match i % 3 {
-                0 => rng.next() * 44.0 - 2.0,
-                1 => rng.next() * 34.0 - 2.0,
-                _ => 0.0,
-            })
-            .collect();
-        let col: Vec<f32> = (0..count * 4).map(|_| rng.next()).collect();
-        (prim, bytes(&pos), bytes(&col), count)
+    let n = 2 * PIECE + 500;
+    let mut batch = |prim: Primitive, size: f32| {
+        // Vertices near a random point per primitive: triangles of a few pixels.
+        let per = match prim {
+            Primitive::Triangles => 3,
+            Primitive::Lines => 2,
+            _ => 1,
+        };
+        let mut pos = Vec::with_capacity(n * per * 3);
+        for _ in 0..n {
+            let (x, y) = (rng.next() * 44.0 - 2.0, rng.next() * 34.0 - 2.0);
+            for _ in 0..per {
+                pos.extend([x + rng.next() * size, y + rng.next() * size, 0.0]);
+            }
+        }
+        let col: Vec<f32> = (0..n * per * 4).map(|_| rng.next()).collect();
+        (prim, bytes(&pos), bytes(&col), n * per)
     };
     let batches = [
-        batch(Primitive::Lines, 60),
-        batch(Primitive::Points, 30),
-        batch(Primitive::Triangles, 90),
-        batch(Primitive::Triangles, 30),
+        batch(Primitive::Lines, 12.0),
+        batch(Primitive::Points, 0.0),
+        batch(Primitive::Triangles, 5.0),
+        batch(Primitive::Triangles, 5.0),
     ];
     let smooth = pixel_state(w, h);
     let mut flat = smooth.clone();
