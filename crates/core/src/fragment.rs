@@ -669,19 +669,9 @@ impl SpanInterp {
         let depth = SpanInterp::depth_only(t, span);
         let (px, py) = (span.x0 - t.origin.0, span.y - t.origin.1);
         // Written out per channel: `array::map` leaves its closure as a call per span.
-        let cw = &t.color_w;
-        let mut c0 = [
-            cw[0].at(px, py) as f32,
-            cw[1].at(px, py) as f32,
-            cw[2].at(px, py) as f32,
-            cw[3].at(px, py) as f32,
-        ];
-        let mut dc = [
-            cw[0].dx as f32,
-            cw[1].dx as f32,
-            cw[2].dx as f32,
-            cw[3].dx as f32,
-        ];
+        let (at, dx) = (t.color_w.at(px, py), t.color_w.dx);
+        let mut c0 = [at[0] as f32, at[1] as f32, at[2] as f32, at[3] as f32];
+        let mut dc = [dx[0] as f32, dx[1] as f32, dx[2] as f32, dx[3] as f32];
         let inv_w0 = t.inv_w.at(px, py) as f32;
         let divide = if t.inv_w.dx == 0.0 && t.inv_w.dy == 0.0 {
             // Constant w: fold it into the planes once.

@@ -139,6 +139,55 @@ impl Plane {
     }
 }
 
+/// Four planes over one primitive, the color channels divided by w: each coefficient as four
+/// lanes rather than four planes of three, so building and evaluating them is vector
+/// arithmetic. Channel by channel the same operations as [`Plane`]'s.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Planes4 {
+    pub dx: [f64; 4],
+    pub dy: [f64; 4],
+    pub c: [f64; 4],
+}
+
+impl Planes4 {
+    const ZERO: Planes4 = Planes4 {
+        dx: [0.0; 4],
+        dy: [0.0; 4],
+        c: [0.0; 4],
+    };
+
+    pub fn from_planes(p: [Plane; 4]) -> Planes4 {
+        Planes4 {
+            dx: p.map(|p| p.dx),
+            dy: p.map(|p| p.dy),
+            c: p.map(|p| p.c),
+        }
+    }
+
+    /// [`Plane::through`] for each channel of `v` (a value per vertex and channel).
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // lanes of three arrays in step
+    fn through(w: &Weights, v: [[f64; 4]; 3]) -> Planes4 {
+        let mut p = Planes4::ZERO;
+        for (w, v) in w.0.iter().zip(v) {
+            for ch in 0..4 {
+                p.dx[ch] += v[ch] * w.dx;
+                p.dy[ch] += v[ch] * w.dy;
+                p.c[ch] += v[ch] * w.c;
+            }
+        }
+        p
+    }
+
+    /// [`Plane::at`] for each channel.
+    #[inline(always)]
+    pub fn at(&self, px: i32, py: i32) -> [f64; 4] {
+        let (x, y) = (px as f64, py as f64);
+        let at = |ch: usize| self.dx[ch] * x + self.dy[ch] * y + self.c[ch];
+        [at(0), at(1), at(2), at(3)]
+    }
+}
+
 /// How the fragments of one primitive get their depth and color: planes in window space,
 /// and for antialiased lines and points, the share of each pixel the primitive covers.
 #[derive(Clone, Debug)]
@@ -150,7 +199,7 @@ pub struct Shading {
     /// 1/w, and each color channel divided by w: their quotient is the perspective-correct
     /// color.
     pub inv_w: Plane,
-    pub color_w: [Plane; 4],
+    pub color_w: Planes4,
     /// The color when it does not vary: flat shading, points.
     pub flat: Option<[f32; 4]>,
     /// Boxed: only antialiased lines and points have one, and it would make every
@@ -338,7 +387,7 @@ impl Triangle {
             origin: (0, 0),
             z: Plane::ZERO,
             inv_w: Plane::ZERO,
-            color_w: [Plane::ZERO; 4],
+            color_w: Planes4::ZERO,
             flat: None,
             coverage: None,
             tex: None,
@@ -497,22 +546,15 @@ pub fn triangle<'v, 's>(
     shading.z = z_plane;
     shading.inv_w = through(inv_w);
     shading.flat = (state.shade_model == ShadeModel::Flat).then(|| color(provoking).to_array());
-    if shading.flat.is_some() {
-        shading.color_w = [Plane::ZERO; 4];
+    shading.color_w = if shading.flat.is_some() {
+        Planes4::ZERO
     } else {
-        let c = [
-            color(v[0]).to_array(),
-            color(v[1]).to_array(),
-            color(v[2]).to_array(),
-        ];
-        for (ch, plane) in shading.color_w.iter_mut().enumerate() {
-            *plane = through([
-                c[0][ch] as f64 * inv_w[0],
-                c[1][ch] as f64 * inv_w[1],
-                c[2][ch] as f64 * inv_w[2],
-            ]);
-        }
-    }
+        let c = |k: usize| {
+            let c = color(v[order[k]]).to_array();
+            c.map(|c| c as f64 * inv_w[order[k]])
+        };
+        Planes4::through(&weights, [c(0), c(1), c(2)])
+    };
     shading.coverage = None;
     (shading.tex, shading.fog) = (None, Plane::ZERO);
     // Checked here too: without fog or textures the call would build nothing. Assigned

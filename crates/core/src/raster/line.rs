@@ -13,7 +13,7 @@
 //! Colors and depth are interpolated with t, the projection of the pixel center onto the
 //! segment, perspective-correctly for colors and linearly for depth.
 
-use super::super::setup::{Coverage, Plane, Shading, Shape};
+use super::super::setup::{Coverage, Plane, Planes4, Shading, Shape};
 use super::super::state::{RenderState, ShadeModel};
 use super::super::target::Rect;
 use super::super::vertex::VertexRef;
@@ -80,7 +80,9 @@ pub fn setup(
         origin: (0, 0),
         z: along(az, bz),
         inv_w: along(aw, bw),
-        color_w: std::array::from_fn(|c| along(a.color()[c] as f64 * aw, b.color()[c] as f64 * bw)),
+        color_w: Planes4::from_planes(std::array::from_fn(|c| {
+            along(a.color()[c] as f64 * aw, b.color()[c] as f64 * bw)
+        })),
         flat,
         coverage,
         tex: tex.clone(),

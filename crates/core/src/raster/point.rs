@@ -5,7 +5,7 @@
 //! position; each fragment's alpha is multiplied by the covered share of its pixel. A point
 //! is one color and one depth.
 
-use super::super::setup::{Coverage, Plane, Shading, Shape};
+use super::super::setup::{Coverage, Plane, Planes4, Shading, Shape};
 use super::super::state::RenderState;
 use super::super::target::Rect;
 use super::super::vertex::VertexRef;
@@ -102,7 +102,7 @@ pub fn setup(state: &RenderState, v: VertexRef<'_>, bounds: Rect) -> Option<Poin
             z: constant(z),
             inv_w: constant(1.0),
             // Both: span routines for smooth shading read the planes, the rest `flat`.
-            color_w: v.color().to_array().map(|c| constant(c as f64)),
+            color_w: Planes4::from_planes(v.color().to_array().map(|c| constant(c as f64))),
             flat: Some(v.color().to_array()),
             coverage,
             tex,

@@ -66,35 +66,44 @@ impl Quotient {
 /// Bounding boxes at most this many pixels wide test each pixel center against the edges
 /// directly: for the few pixels of a small triangle that is cheaper than the divisions
 /// that find the ends of its rows.
-const NARROW: i64 = 4;
+const NARROW: usize = 4;
 
 /// [`spans`] for a bounding box at most [`NARROW`] pixels wide: the same test
 /// `E − bias ≥ 0`, evaluated at every pixel center, so the same pixels. A row's covered
 /// pixels are one interval (the triangle is convex), from the first to the last.
+///
+/// The edge values are f64 lanes, one per pixel of the row, so a row is a few vector
+/// instructions: every value is an integer below 2⁵² in magnitude (coordinates below 2²⁵
+/// subpixels from the origin, see [`crate::MAX_VIEWPORT_DIM`], so `c` is below 2⁵¹ and
+/// `a·x + b·y` below 2⁴⁷ inside the box), where f64 sums are exact.
 fn narrow_spans(t: &Triangle, rows: std::ops::Range<i32>, ry: i64, mut emit: impl FnMut(Span)) {
     let Rect { x0, x1, .. } = t.bbox;
-    let width = (x1 - x0) as i64;
     let ox = t.shading.origin.0;
-    // Per edge: E − bias at the row's first pixel, its growth per row and per pixel.
-    let edge = |e: &super::super::setup::Edge| {
-        (
-            e.at_center((x0 - ox) as i64, ry) - e.bias(),
-            (e.b as i64) << SUBPIXEL_BITS,
-            (e.a as i64) << SUBPIXEL_BITS,
-        )
-    };
-    let mut edges = [edge(&t.edges[0]), edge(&t.edges[1]), edge(&t.edges[2])];
-    for y in rows {
-        // A bit per covered pixel, every one of the NARROW tested without a branch (a
-        // pixel's coverage is as unpredictable as a rounding): then the first and the last.
-        let mut covered = 0u32;
-        for k in 0..NARROW {
-            let inside = |(base, _, step): (i64, i64, i64)| base + k * step >= 0;
-            let hit = (k < width) & inside(edges[0]) & inside(edges[1]) & inside(edges[2]);
-            covered |= u32::from(hit) << k;
+    let mut values = [[0.0; NARROW]; 3];
+    let mut growth = [0.0; 3];
+    for ((v, g), e) in values.iter_mut().zip(&mut growth).zip(&t.edges) {
+        let base = e.at_center((x0 - ox) as i64, ry) - e.bias();
+        let step = (e.a as i64) << SUBPIXEL_BITS;
+        for (k, v) in v.iter_mut().enumerate() {
+            *v = (base + k as i64 * step) as f64;
         }
-        for (base, dbase, _) in &mut edges {
-            *base += *dbase;
+        *g = ((e.b as i64) << SUBPIXEL_BITS) as f64;
+    }
+    // Pixels of the lanes past the box are never covered.
+    let in_box = (1u32 << (x1 - x0)) - 1;
+    for y in rows {
+        // A bit per covered pixel, every lane tested without a branch (a pixel's coverage
+        // is as unpredictable as a rounding): then the first and the last.
+        let [e0, e1, e2] = &values;
+        let mut covered = 0;
+        for (k, ((a, b), c)) in e0.iter().zip(e1).zip(e2).enumerate() {
+            covered |= u32::from(a.min(*b).min(*c) >= 0.0) << k;
+        }
+        covered &= in_box;
+        for (v, g) in values.iter_mut().zip(growth) {
+            for v in v {
+                *v += g;
+            }
         }
         if covered != 0 {
             emit(Span {
@@ -117,7 +126,7 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
     let (ox, oy) = t.shading.origin;
     let width = (x1 - x0) as i64;
     let ry = (y0 - oy) as i64;
-    if width <= NARROW {
+    if width <= NARROW as i64 {
         narrow_spans(t, y0..y1, ry, emit);
         return;
     }
@@ -243,5 +252,80 @@ mod tests {
             }
         }
         assert!(narrow > 100 && wide > 100, "{narrow} narrow, {wide} wide");
+    }
+
+    /// Narrow boxes of triangles that reach the guard band of the largest viewport: the
+    /// largest edge values there are (near 2⁵¹), where the f64 lanes must still be exact.
+    /// A box three pixels wide, anywhere in the viewport, cuts each triangle. Every other
+    /// triangle has its vertices on pixel centers and edges of slope ±1, which cross pixel
+    /// centers on every row, where a value off by one decides the pixel.
+    #[test]
+    fn narrow_spans_are_exact_for_the_largest_edge_values() {
+        let size = crate::MAX_VIEWPORT_DIM as i32;
+        let state = RenderState::new(size, size);
+        let layout = Layout::full(0);
+        let mut seed = 0x2545_f491_u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed as f32 / u32::MAX as f32
+        };
+        let guard = crate::clip::GUARD;
+        let mut covered = 0;
+        for n in 0..400 {
+            let p = if n % 2 == 0 {
+                let mut corner = || {
+                    let v = |r: f32| (r * 2.0 - 1.0) * guard;
+                    Vec4::new(v(next()), v(next()), 0.0, 1.0)
+                };
+                [corner(), corner(), corner()]
+            } else {
+                // Pixel (x, y)'s center in clip coordinates, x and y within the guard band.
+                let half = size as f32 / 2.0;
+                let center = |x: f32, y: f32| {
+                    Vec4::new((x + 0.5) / half - 1.0, (y + 0.5) / half - 1.0, 0.0, 1.0)
+                };
+                let reach = half * (guard - 1.0);
+                let (x, y) = (
+                    (next() * size as f32).floor(),
+                    (next() * size as f32).floor(),
+                );
+                let d = (next() * reach).floor() + 1.0;
+                let x0 = if n % 4 == 1 { x - d } else { x + d };
+                [center(x0, y), center(x, y + d), center(x, y - d)]
+            };
+            let f = p.map(|p| layout.pack(&ClipVertex::new(p, Vec4::ONE)));
+            let v = f.each_ref().map(|f| layout.view(f));
+            let x = (next() * (size - 3) as f32) as i32;
+            let bounds = Rect::new(x, 0, 3, size);
+            let mut kept = None;
+            setup::triangle(&state, v, v[2], bounds, None, &mut kept);
+            let Some(t) = kept else {
+                continue;
+            };
+            let (ox, oy) = t.shading.origin;
+            let mut rows = Vec::new();
+            spans(&t, 0..size, |s| rows.push(s));
+            let mut want = Vec::new();
+            for y in t.bbox.y0..t.bbox.y1 {
+                let inside: Vec<i32> = (t.bbox.x0..t.bbox.x1)
+                    .filter(|&x| {
+                        let (px, py) = ((x - ox) as i64, (y - oy) as i64);
+                        t.edges.iter().all(|e| e.at_center(px, py) - e.bias() >= 0)
+                    })
+                    .collect();
+                if let (Some(&a), Some(&b)) = (inside.first(), inside.last()) {
+                    want.push(Span {
+                        y,
+                        x0: a,
+                        x1: b + 1,
+                    });
+                }
+            }
+            assert_eq!(rows, want, "triangle {n}");
+            covered += rows.len();
+        }
+        assert!(covered > 100_000, "{covered} rows");
     }
 }
