@@ -299,9 +299,10 @@ fn triangles_behind_the_eye_leave_no_garbage() {
 }
 
 /// A small deterministic generator so the scene is the same on every run.
-struct Lcg(u64);
+/// A seeded generator of test data: the next value in [0, 1).
+pub(crate) struct Lcg(pub(crate) u64);
 impl Lcg {
-    fn next(&mut self) -> f32 {
+    pub(crate) fn next(&mut self) -> f32 {
         self.0 = self
             .0
             .wrapping_mul(6364136223846793005)
@@ -1196,7 +1197,8 @@ fn smooth_hints_trade_samples_for_error() {
 
 /// A frame reused from flush to flush sets its triangles up over the primitives of the
 /// batches before (lines, points, flat then smooth triangles), and so do the lists that
-/// the pieces of a long draw are set up in on several threads: the image is the one that
+/// the pieces of a long draw are set up in when the library runs more than one thread
+/// (`pool::thread_count`: every core, or `GLES_CM_THREADS`): the image is the one that
 /// fresh frames give. Each draw is cut into three pieces (`PIECE`).
 #[test]
 fn reused_primitive_storage_leaves_no_trace() {

@@ -190,8 +190,41 @@ mod tests {
     use super::*;
     use crate::setup;
     use crate::state::RenderState;
+    use crate::tests::Lcg;
     use crate::vertex::{ClipVertex, Layout};
     use glam::Vec4;
+
+    /// The triangle of clip-space corners `p`, set up for `state` inside `bounds`, if kept.
+    fn set_up(state: &RenderState, p: [Vec4; 3], bounds: Rect) -> Option<Triangle> {
+        let layout = Layout::full(0);
+        let f = p.map(|p| layout.pack(&ClipVertex::new(p, Vec4::ONE)));
+        let v = f.each_ref().map(|f| layout.view(f));
+        let mut kept = None;
+        setup::triangle(state, v, v[2], bounds, None, &mut kept);
+        kept
+    }
+
+    /// Asserts that [`spans`] gives exactly the pixel centers of rows `rows` that the edge
+    /// functions admit, and returns how many spans it gave.
+    fn spans_admit_the_centers(t: &Triangle, rows: std::ops::Range<i32>, n: usize) -> usize {
+        let (mut got, mut count) = (Vec::new(), 0);
+        spans(t, rows.clone(), |s| {
+            got.extend((s.x0..s.x1).map(|x| (x, s.y)));
+            count += 1;
+        });
+        let (ox, oy) = t.shading.origin;
+        let mut want = Vec::new();
+        for y in t.bbox.y0.max(rows.start)..t.bbox.y1.min(rows.end) {
+            for x in t.bbox.x0..t.bbox.x1 {
+                let (px, py) = ((x - ox) as i64, (y - oy) as i64);
+                if t.edges.iter().all(|e| e.at_center(px, py) - e.bias() >= 0) {
+                    want.push((x, y));
+                }
+            }
+        }
+        assert_eq!(got, want, "triangle {n}");
+        count
+    }
 
     /// Both ways of finding a row's pixels (the edge functions at each center for narrow
     /// bounding boxes, the stepped quotients for wider ones) give exactly the pixel centers
@@ -200,21 +233,14 @@ mod tests {
     fn spans_are_the_centers_the_edge_functions_admit() {
         let (w, h) = (24, 24);
         let state = RenderState::new(w, h);
-        let layout = Layout::full(0);
-        let mut seed = 0x9e37_79b9_u32;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed as f32 / u32::MAX as f32
-        };
+        let mut rng = Lcg(0x9e37_79b9);
         let (mut narrow, mut wide) = (0, 0);
         for n in 0..4000 {
             // Within about 1 to 8 pixels of a point, in clip coordinates, some across the
             // edges of the bounds (which cut the bounding box).
             let size = if n % 2 == 0 { 0.1 } else { 0.6 };
-            let (cx, cy) = (next() * 2.0 - 1.2, next() * 2.0 - 1.2);
-            let mut corner = || Vec4::new(cx + size * next(), cy + size * next(), 0.0, 1.0);
+            let (cx, cy) = (rng.next() * 2.0 - 1.2, rng.next() * 2.0 - 1.2);
+            let mut corner = || Vec4::new(cx + size * rng.next(), cy + size * rng.next(), 0.0, 1.0);
             let mut p = [corner(), corner(), corner()];
             // Every third triangle has a horizontal edge through a row of pixel centers,
             // above or below the third vertex: an edge that limits rows rather than
@@ -224,31 +250,14 @@ mod tests {
                 p[1].y = (2.0 * row + 1.0) / h as f32 - 1.0;
                 p[2].y = p[1].y;
             }
-            let f = p.map(|p| layout.pack(&ClipVertex::new(p, Vec4::ONE)));
-            let v = f.each_ref().map(|f| layout.view(f));
-            let bounds = Rect::new(2, 3, w - 7, h - 5);
-            let mut kept = None;
-            setup::triangle(&state, v, v[2], bounds, None, &mut kept);
-            let Some(t) = kept else {
+            let Some(t) = set_up(&state, p, Rect::new(2, 3, w - 7, h - 5)) else {
                 continue;
             };
-            let mut got = Vec::new();
-            spans(&t, 0..h, |s| got.extend((s.x0..s.x1).map(|x| (x, s.y))));
-            let (ox, oy) = t.shading.origin;
-            let mut want = Vec::new();
-            for y in t.bbox.y0..t.bbox.y1 {
-                for x in t.bbox.x0..t.bbox.x1 {
-                    let (px, py) = ((x - ox) as i64, (y - oy) as i64);
-                    if t.edges.iter().all(|e| e.at_center(px, py) - e.bias() >= 0) {
-                        want.push((x, y));
-                    }
-                }
-            }
-            assert_eq!(got, want, "triangle {n}");
+            let drawn = spans_admit_the_centers(&t, 0..h, n) > 0;
             if t.bbox.x1 - t.bbox.x0 <= NARROW as i32 {
-                narrow += usize::from(!want.is_empty());
+                narrow += usize::from(drawn);
             } else {
-                wide += usize::from(!want.is_empty());
+                wide += usize::from(drawn);
             }
         }
         assert!(narrow > 100 && wide > 100, "{narrow} narrow, {wide} wide");
@@ -263,21 +272,14 @@ mod tests {
     fn narrow_spans_are_exact_for_the_largest_edge_values() {
         let size = crate::MAX_VIEWPORT_DIM as i32;
         let state = RenderState::new(size, size);
-        let layout = Layout::full(0);
-        let mut seed = 0x2545_f491_u32;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed as f32 / u32::MAX as f32
-        };
+        let mut rng = Lcg(0x2545_f491);
         let guard = crate::clip::GUARD;
         let mut covered = 0;
         for n in 0..400 {
             let p = if n % 2 == 0 {
                 let mut corner = || {
                     let v = |r: f32| (r * 2.0 - 1.0) * guard;
-                    Vec4::new(v(next()), v(next()), 0.0, 1.0)
+                    Vec4::new(v(rng.next()), v(rng.next()), 0.0, 1.0)
                 };
                 [corner(), corner(), corner()]
             } else {
@@ -287,44 +289,17 @@ mod tests {
                     Vec4::new((x + 0.5) / half - 1.0, (y + 0.5) / half - 1.0, 0.0, 1.0)
                 };
                 let reach = half * (guard - 1.0);
-                let (x, y) = (
-                    (next() * size as f32).floor(),
-                    (next() * size as f32).floor(),
-                );
-                let d = (next() * reach).floor() + 1.0;
+                let mut pixel = || (rng.next() * size as f32).floor();
+                let (x, y) = (pixel(), pixel());
+                let d = (rng.next() * reach).floor() + 1.0;
                 let x0 = if n % 4 == 1 { x - d } else { x + d };
                 [center(x0, y), center(x, y + d), center(x, y - d)]
             };
-            let f = p.map(|p| layout.pack(&ClipVertex::new(p, Vec4::ONE)));
-            let v = f.each_ref().map(|f| layout.view(f));
-            let x = (next() * (size - 3) as f32) as i32;
-            let bounds = Rect::new(x, 0, 3, size);
-            let mut kept = None;
-            setup::triangle(&state, v, v[2], bounds, None, &mut kept);
-            let Some(t) = kept else {
+            let x = (rng.next() * (size - 3) as f32) as i32;
+            let Some(t) = set_up(&state, p, Rect::new(x, 0, 3, size)) else {
                 continue;
             };
-            let (ox, oy) = t.shading.origin;
-            let mut rows = Vec::new();
-            spans(&t, 0..size, |s| rows.push(s));
-            let mut want = Vec::new();
-            for y in t.bbox.y0..t.bbox.y1 {
-                let inside: Vec<i32> = (t.bbox.x0..t.bbox.x1)
-                    .filter(|&x| {
-                        let (px, py) = ((x - ox) as i64, (y - oy) as i64);
-                        t.edges.iter().all(|e| e.at_center(px, py) - e.bias() >= 0)
-                    })
-                    .collect();
-                if let (Some(&a), Some(&b)) = (inside.first(), inside.last()) {
-                    want.push(Span {
-                        y,
-                        x0: a,
-                        x1: b + 1,
-                    });
-                }
-            }
-            assert_eq!(rows, want, "triangle {n}");
-            covered += rows.len();
+            covered += spans_admit_the_centers(&t, 0..size, n);
         }
         assert!(covered > 100_000, "{covered} rows");
     }
