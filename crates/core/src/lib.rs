@@ -319,19 +319,19 @@ fn set_up_triangle(
         vertices.at(slots[1]),
         vertices.at(slots[2]),
     );
+    // Inside the clip volume (most triangles), the clipper would pass it on as it is.
+    if !vertices.may_clip(slots[0], slots[1], slots[2]) {
+        let corners = vertices.corners(slots);
+        setup::triangle(state, [a, b, c], corners, c, bounds, depth, out);
+        return;
+    }
     // A clipped polygon is convex: fan it out from its first vertex.
-    let mut fan = |poly: &[vertex::VertexRef<'_>]| {
+    clip::triangle(a, b, c, |poly: &[vertex::VertexRef<'_>]| {
         for i in 1..poly.len() - 1 {
             let tri = [poly[0], poly[i], poly[i + 1]];
-            setup::triangle(state, tri, c, bounds, depth, out);
+            setup::triangle(state, tri, None, c, bounds, depth, out);
         }
-    };
-    // Inside the clip volume (most triangles), the clipper would pass it on as it is.
-    if vertices.may_clip(slots[0], slots[1], slots[2]) {
-        clip::triangle(a, b, c, fan);
-    } else {
-        fan(&[a, b, c]);
-    }
+    });
 }
 
 /// Draws `draw` with `state` into `target` and returns when every pixel is written.

@@ -1,10 +1,10 @@
-//! Triangle setup: the viewport transform, snapping to [`SUBPIXEL_BITS`] fixed-point
-//! subpixels, integer edge functions with a top-left fill rule, facing and culling.
+//! Triangle setup: from corners in window space (snapped to [`SUBPIXEL_BITS`] fixed-point
+//! subpixels by the vertex stage), integer edge functions with a top-left fill rule,
+//! facing and culling, and the planes of the attributes.
 
-use super::clip;
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
 use super::target::{DepthFormat, Rect};
-use super::vertex::VertexRef;
+use super::vertex::{VertexRef, ViewportTransform, Window};
 use super::{SUBPIXEL_BITS, TEXTURE_UNITS};
 
 const ONE: i64 = 1 << SUBPIXEL_BITS;
@@ -22,25 +22,13 @@ pub(crate) fn round_i64(v: f64) -> i64 {
     (v + (0.5 - f64::EPSILON / 4.0).copysign(v)) as i64
 }
 
-/// [`round_i64`] for |v| < 2⁵¹ and NaN (0, as there): a window coordinate in subpixels.
-/// Without `as i64`, which tests for NaN and saturates value by value: truncated, the
-/// integer added to 1.5 · 2⁵² is the low bits of the sum, so the vertices of a triangle
-/// round as one vector.
-#[inline(always)]
-fn snap(v: f64) -> i64 {
-    const MAGIC: f64 = 6_755_399_441_055_744.0;
-    let v = if v.is_nan() { 0.0 } else { v };
-    let t = (v + (0.5 - f64::EPSILON / 4.0).copysign(v)).trunc();
-    ((t + MAGIC).to_bits() as i64).wrapping_sub(MAGIC.to_bits() as i64)
-}
-
 /// An edge function `E(x, y) = a·x + b·y + c` over subpixel coordinates relative to the
 /// triangle's origin; positive inside. [`Edge::bias`] is 0 for edges that own the pixels
 /// exactly on them (top and left edges) and 1 otherwise, so `E − bias ≥ 0` is the coverage
 /// test and a pixel on an edge shared by two triangles is drawn by exactly one of them.
 ///
 /// `a` and `b` are differences of snapped coordinates, below 2²⁵ in magnitude (see
-/// [`clip::GUARD`]), so they fit an i32; with the bias derived from them rather than stored
+/// [`crate::clip::GUARD`]), so they fit an i32; with the bias derived from them rather than stored
 /// an edge takes 16 bytes, and every primitive copied into a frame 48 fewer.
 #[derive(Clone, Copy, Debug)]
 pub struct Edge {
@@ -412,9 +400,11 @@ impl TriangleSlot for Option<Triangle> {
     }
 }
 
-/// Sets up a clipped triangle for rasterization inside `bounds` of a target with `depth`
-/// bits into a slot of `out`, or returns `false` (and takes no slot) when it is culled,
-/// has no area, or cannot touch `bounds`. `provoking` supplies the flat-shaded color.
+/// Sets up a clipped triangle of vertices `v` for rasterization inside `bounds` of a
+/// target with `depth` bits into a slot of `out`, or returns `false` (and takes no slot)
+/// when it is culled, has no area, or cannot touch `bounds`. `corners` are the vertices'
+/// window coordinates when the vertex stage has them, else they are worked out here
+/// (both by [`ViewportTransform::lanes`]). `provoking` supplies the flat-shaded color.
 /// Compiled also for AVX2 and SSE4.1 and chosen at run time, as the vertex and span loops
 /// are: the same f64 operations, so the same results.
 #[cfg_attr(
@@ -424,46 +414,26 @@ impl TriangleSlot for Option<Triangle> {
 pub fn triangle<'v, 's>(
     state: &RenderState,
     v: [VertexRef<'v>; 3],
+    corners: Option<[Window; 3]>,
     provoking: VertexRef<'v>,
     bounds: Rect,
     depth: Option<DepthFormat>,
     out: &'s mut dyn TriangleSlot,
 ) -> bool {
-    let vp = state.viewport;
-    let (hw, hh) = (vp.width as f64 * 0.5, vp.height as f64 * 0.5);
-    let (cx, cy) = (vp.x as f64 + hw, vp.y as f64 + hh);
-    let (n, f) = (state.depth_range[0] as f64, state.depth_range[1] as f64);
     // In a sample plane, the primitive moves so that pixel centers sample it at the
     // plane's sample position (exact: the offsets are on the subpixel grid).
     let [ox, oy] = state.sample.map_or([0, 0], |s| s.offset.map(|o| o as i64));
-    // The vertices as four lanes (the last a copy of the third), so that each step below
-    // is a vector operation for all of them: the divisions, the clamps, the roundings.
-    let p = [v[0].pos(), v[1].pos(), v[2].pos()];
-    debug_assert!(p.iter().all(|p| p.w >= clip::W_MIN));
-    let lanes = |c: usize| {
-        [
-            p[0][c] as f64,
-            p[1][c] as f64,
-            p[2][c] as f64,
-            p[2][c] as f64,
-        ]
-    };
-    let (px, py, pz, pw) = (lanes(0), lanes(1), lanes(2), lanes(3));
-    let (mut wx, mut wy, mut z, mut inv_w) = ([0i64; 4], [0i64; 4], [0f64; 4], [0f64; 4]);
-    for k in 0..4 {
-        let iw = 1.0 / pw[k];
-        // Clipping bounds |x/w| and |y/w| by the guard band; the clamp only removes rounding
-        // excess, and keeps a w near W_MIN from producing huge coordinates.
-        let g = clip::GUARD as f64;
-        let x = (px[k] * iw).clamp(-g, g) * hw + cx;
-        let y = (py[k] * iw).clamp(-g, g) * hh + cy;
-        wx[k] = snap(x * ONE as f64) - ox;
-        wy[k] = snap(y * ONE as f64) - oy;
-        z[k] = ((pz[k] * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
-        inv_w[k] = iw;
-    }
-    let win = [(wx[0], wy[0]), (wx[1], wy[1]), (wx[2], wy[2])];
-    let (z, inv_w) = ([z[0], z[1], z[2]], [inv_w[0], inv_w[1], inv_w[2]]);
+    // Here rather than in the caller, so that it takes this function's instruction set
+    // (baseline x86-64 rounds by a library call).
+    let [a, b, c] = corners.unwrap_or_else(|| {
+        ViewportTransform::new(state).corners([v[0].pos(), v[1].pos(), v[2].pos()])
+    });
+    let win = [
+        (a.x - ox, a.y - oy),
+        (b.x - ox, b.y - oy),
+        (c.x - ox, c.y - oy),
+    ];
+    let (z, inv_w) = ([a.z, b.z, c.z], [a.inv_w, b.inv_w, c.inv_w]);
     // Facing and culling need only the snapped vertices (the area is the same from any
     // origin), so culled triangles skip the bounding box and the planes.
     let area = (win[1].0 - win[0].0) * (win[2].1 - win[0].1)
@@ -569,7 +539,8 @@ pub fn triangle<'v, 's>(
 
 #[cfg(test)]
 mod tests {
-    use super::{round_i64, snap};
+    use super::round_i64;
+    use crate::vertex::window::snap;
 
     #[test]
     fn inline_rounding_matches_f64_round() {

@@ -1252,3 +1252,52 @@ fn reused_primitive_storage_leaves_no_trace() {
         "the batches draw"
     );
 }
+
+#[test]
+fn corners_from_the_vertex_stage_and_from_set_up_give_the_same_pixels() {
+    // A strip, whose window coordinates the vertex stage works out, and the same triangles
+    // as a list in the same vertex order, whose corners set-up transforms: every pixel
+    // must be the same. Vertices 8 to 15 lie right of the frustum, so the list has
+    // triangles set up from corners far outside the view too.
+    let mut s = RenderState::new(48, 40);
+    s.projection = Mat4::perspective_rh_gl(1.0, 1.2, 0.5, 20.0);
+    let mut rng = Lcg(5);
+    let (mut p, mut c) = (Vec::new(), Vec::new());
+    for k in 0..18 {
+        let d = 2.0 + 4.0 * rng.next();
+        // Clip x is about 1.53·x and w is d: right of the frustum from x > 0.66·d on.
+        let x = if (8..16).contains(&k) {
+            d * (1.0 + rng.next())
+        } else {
+            d * (0.6 * rng.next() - 0.5)
+        };
+        p.extend([x, d * (0.8 * rng.next() - 0.4), -d]);
+        c.extend([rng.next(), rng.next(), rng.next(), 1.0]);
+    }
+    let (pb, cb) = (bytes(&p), bytes(&c));
+    let strip = colored_call(Primitive::TriangleStrip, &pb, &cb, 18);
+    let (mut lp, mut lc) = (Vec::new(), Vec::new());
+    Primitive::TriangleStrip.for_each_triangle(&strip.indices, |a, b, c_| {
+        for v in [a, b, c_] {
+            lp.extend_from_slice(&p[3 * v..3 * v + 3]);
+            lc.extend_from_slice(&c[4 * v..4 * v + 4]);
+        }
+    });
+    let (lpb, lcb) = (bytes(&lp), bytes(&lc));
+    let list = colored_call(Primitive::Triangles, &lpb, &lcb, lp.len() / 3);
+    assert!(vertex::run(&s, &strip)
+        .unwrap()
+        .corners([0, 1, 2])
+        .is_some());
+    assert!(vertex::run(&s, &list).unwrap().corners([0, 1, 2]).is_none());
+    let mut images = [target(48, 40), target(48, 40)];
+    for (t, call) in images.iter_mut().zip([&strip, &list]) {
+        render(&s, call, t).unwrap();
+    }
+    let right_half = (0..40)
+        .flat_map(|y| (24..48).map(move |x| (x, y)))
+        .filter(|&(x, y)| images[0].pixel(x, y)[3] != 0)
+        .count();
+    assert!(right_half > 100, "{right_half} pixels right of the middle");
+    assert!(images[0].color() == images[1].color());
+}

@@ -13,8 +13,10 @@ mod layout;
 pub mod lighting;
 pub mod power;
 mod transform;
+pub(crate) mod window;
 
 pub use layout::{lerp, ClipVertex, Floats, Layout, VertexRef, MAX_STRIDE};
+pub use window::{ViewportTransform, Window};
 
 use super::lanes::{Lane, LANES};
 
@@ -547,6 +549,9 @@ pub struct Vertices {
     data: Vec<f32>,
     /// Each vertex's [`reject_code`].
     codes: Vec<u8>,
+    /// Each vertex's window coordinates, where the draw's triangles share vertices;
+    /// otherwise empty (see [`Vertices::corners`]).
+    windows: Vec<Window>,
     layout: Layout,
     map: VertexMap,
 }
@@ -589,6 +594,14 @@ impl Vertices {
         self.layout.planes > 0 || (self.codes[a] | self.codes[b] | self.codes[c]) & CLIPS != 0
     }
 
+    /// The window coordinates of the vertices in slots `k`, if the vertex stage worked
+    /// them out (see [`ViewportTransform`]).
+    #[inline]
+    pub fn corners(&self, k: [usize; 3]) -> Option<[Window; 3]> {
+        (!self.windows.is_empty())
+            .then(|| [self.windows[k[0]], self.windows[k[1]], self.windows[k[2]]])
+    }
+
     /// The vertex in slot `k` ([`Vertices::slot`]).
     #[inline]
     pub fn at(&self, k: usize) -> VertexRef<'_> {
@@ -615,10 +628,12 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     let layout = stage.layout;
     let mut data = Vec::new();
     let mut codes = Vec::new();
+    let mut windows = Vec::new();
     let Some((lo, hi)) = draw.indices.range() else {
         return Ok(Vertices {
             data,
             codes,
+            windows,
             layout,
             map: VertexMap::Dense { base: 0 },
         });
@@ -630,16 +645,20 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
             .and_then(|f| f.checked_add(MAX_STRIDE))
             .ok_or(OutOfMemory)?;
         data.try_reserve_exact(floats).map_err(|_| OutOfMemory)?;
+        if stage.window.is_some() {
+            windows.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
+        }
         codes.try_reserve_exact(count).map_err(|_| OutOfMemory)
     };
     let span = hi - lo + 1;
     let n = draw.indices.len();
     if matches!(draw.indices, Indices::Range { .. }) || span <= n.saturating_mul(2) {
         reserve(span)?;
-        fill(&mut data, &mut codes, &stage, lo..=hi, span);
+        fill(&mut data, &mut codes, &mut windows, &stage, lo..=hi, span);
         return Ok(Vertices {
             data,
             codes,
+            windows,
             layout,
             map: VertexMap::Dense { base: lo },
         });
@@ -653,6 +672,7 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     fill(
         &mut data,
         &mut codes,
+        &mut windows,
         &stage,
         keys.iter().copied(),
         keys.len(),
@@ -660,14 +680,16 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     Ok(Vertices {
         data,
         codes,
+        windows,
         layout,
         map: VertexMap::Sparse { keys },
     })
 }
 
 /// Appends the `count` vertices `numbers` yields to `data` (which has the room), then the
-/// padding, and their reject codes to `codes`. Compiled also for AVX2 and SSE4.1 (the
-/// whole vertex computation is inlined here) and chosen at run time.
+/// padding, their reject codes to `codes` and, for triangles that share vertices, their
+/// window coordinates to `windows`. Compiled also for AVX2 and SSE4.1 (the whole vertex
+/// computation is inlined here) and chosen at run time.
 #[cfg_attr(
     not(fuzzing),
     multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
@@ -675,6 +697,7 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
 fn fill(
     data: &mut Vec<f32>,
     codes: &mut Vec<u8>,
+    windows: &mut Vec<Window>,
     stage: &transform::Stage<'_, '_>,
     numbers: impl Iterator<Item = usize>,
     count: usize,
@@ -697,9 +720,12 @@ fn fill(
             idx[k] = idx[0];
         }
         let out = &mut group[..used * stride];
-        let code = stage.write_lanes(&idx, out, light_all);
+        let (code, pos) = stage.write_lanes(&idx, out, light_all);
         data.extend_from_slice(out);
         codes.extend(code[..used].iter().map(|&c| c as u8));
+        if let Some(viewport) = &stage.window {
+            windows.extend_from_slice(&viewport.lanes(pos)[..used]);
+        }
     }
     data.resize(data.len() + MAX_STRIDE, 0.0);
     let Some(d) = stage.deferred else {

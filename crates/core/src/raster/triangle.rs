@@ -11,55 +11,57 @@ use super::super::target::Rect;
 use super::super::SUBPIXEL_BITS;
 use super::Span;
 
-/// ⌊n / d⌋ for a numerator that grows by `dn` per row and a fixed positive `d`, kept
-/// exact with the remainder.
-#[derive(Clone, Copy)]
-struct Quotient {
-    q: i64,
-    /// The remainder, in [0, d).
-    r: i64,
-    d: i64,
-    dq: i64,
-    dr: i64,
+/// `(⌊n / d⌋, n mod d)` for d > 0 and |n|, d < 2⁵² (exact as f64), by an f64 division:
+/// rounding is monotonic and keeps integers, so the rounded quotient lies between the same
+/// two integers as the exact one, and its truncation is ⌊n / d⌋ or, when it rounded up to
+/// the next integer or is negative, one more, which a negative remainder reveals. Lanes
+/// of these are vector divisions, where 64-bit integer divisions go one at a time.
+#[inline(always)]
+fn floor_div(n: i64, d: i64) -> (i64, i64) {
+    let q = (n as f64 / d as f64) as i64;
+    let r = n - q * d;
+    if r < 0 {
+        (q - 1, r + d)
+    } else {
+        (q, r)
+    }
 }
 
-impl Quotient {
-    fn new(n: i64, dn: i64, d: i64) -> Quotient {
-        // One division each for quotient and remainder (d > 0), then the floor's fix-up.
-        let floor = |n: i64| {
-            let (q, r) = (n / d, n % d);
-            if r < 0 {
-                (q - 1, r + d)
-            } else {
-                (q, r)
-            }
-        };
-        // No step (a vertical edge, or a single row) needs no division.
-        let (q, r) = floor(n);
-        let (dq, dr) = if dn == 0 { (0, 0) } else { floor(dn) };
-        Quotient { q, r, d, dq, dr }
-    }
+/// The four bounds of a row's pixels, two lows then two highs, as lanes: each ⌊n / d⌋ for a
+/// numerator that grows by `dn` per row over a fixed positive `d`, kept exact with the
+/// remainder. A row steps all four in a few vector instructions.
+struct Quotients {
+    q: [i64; 4],
+    /// The remainders, each in [0, d).
+    r: [i64; 4],
+    d: [i64; 4],
+    dq: [i64; 4],
+    dr: [i64; 4],
+}
 
-    /// A bound that stays at `q`.
-    fn fixed(q: i64) -> Quotient {
-        Quotient {
-            q,
-            r: 0,
-            d: 1,
-            dq: 0,
-            dr: 0,
+impl Quotients {
+    /// The quotients of numerators `n`, growing by `dn` per row, over `d`.
+    #[inline(always)]
+    fn new(n: [i64; 4], dn: [i64; 4], d: [i64; 4]) -> Quotients {
+        let (mut q, mut r, mut dq, mut dr) = ([0; 4], [0; 4], [0; 4], [0; 4]);
+        for k in 0..4 {
+            (q[k], r[k]) = floor_div(n[k], d[k]);
+            (dq[k], dr[k]) = floor_div(dn[k], d[k]);
         }
+        Quotients { q, r, d, dq, dr }
     }
 
-    /// The next row's quotient. Without a branch: whether the remainder carries is as
+    /// The next row's quotients. Without a branch: whether a remainder carries is as
     /// unpredictable as a rounding.
-    #[inline]
+    #[inline(always)]
     fn step(&mut self) {
-        self.q += self.dq;
-        self.r += self.dr;
-        let carry = self.r >= self.d;
-        self.q += i64::from(carry);
-        self.r -= if carry { self.d } else { 0 };
+        for k in 0..4 {
+            self.q[k] += self.dq[k];
+            self.r[k] += self.dr[k];
+            let carry = self.r[k] >= self.d[k];
+            self.q[k] += i64::from(carry);
+            self.r[k] -= if carry { self.d[k] } else { 0 };
+        }
     }
 }
 
@@ -76,6 +78,7 @@ const NARROW: usize = 4;
 /// instructions: every value is an integer below 2⁵² in magnitude (coordinates below 2²⁵
 /// subpixels from the origin, see [`crate::MAX_VIEWPORT_DIM`], so `c` is below 2⁵¹ and
 /// `a·x + b·y` below 2⁴⁷ inside the box), where f64 sums are exact.
+#[inline(always)]
 fn narrow_spans(t: &Triangle, rows: std::ops::Range<i32>, ry: i64, mut emit: impl FnMut(Span)) {
     let Rect { x0, x1, .. } = t.bbox;
     let ox = t.shading.origin.0;
@@ -92,14 +95,16 @@ fn narrow_spans(t: &Triangle, rows: std::ops::Range<i32>, ry: i64, mut emit: imp
     // Pixels of the lanes past the box are never covered.
     let in_box = (1u32 << (x1 - x0)) - 1;
     for y in rows {
-        // A bit per covered pixel, every lane tested without a branch (a pixel's coverage
-        // is as unpredictable as a rounding): then the first and the last.
+        // A bit per pixel outside an edge, every lane tested without a branch (a pixel's
+        // coverage is as unpredictable as a rounding): then the first and the last
+        // covered. No value is −0 (a conversion gives +0, and so does a sum that cancels),
+        // so `E ≥ 0` is a clear sign bit, and the three edges' bits ORed test them all.
         let [e0, e1, e2] = &values;
-        let mut covered = 0;
+        let mut outside = 0;
         for (k, ((a, b), c)) in e0.iter().zip(e1).zip(e2).enumerate() {
-            covered |= u32::from(a.min(*b).min(*c) >= 0.0) << k;
+            outside |= (((a.to_bits() | b.to_bits() | c.to_bits()) >> 63) as u32) << k;
         }
-        covered &= in_box;
+        let covered = !outside & in_box;
         for (v, g) in values.iter_mut().zip(growth) {
             for v in v {
                 *v += g;
@@ -116,7 +121,12 @@ fn narrow_spans(t: &Triangle, rows: std::ops::Range<i32>, ry: i64, mut emit: imp
 }
 
 /// Calls `emit` for every run of pixels on rows `rows` whose centers `t` covers under the
-/// top-left rule.
+/// top-left rule. Compiled also for AVX2 and SSE4.1 and chosen at run time: the bounds'
+/// lanes step as 64-bit vectors there (SSE2 has no 64-bit compare).
+#[cfg_attr(
+    not(fuzzing),
+    multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))
+)]
 pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span)) {
     let Rect { x0, x1, .. } = t.bbox;
     let (y0, y1) = (t.bbox.y0.max(rows.start), t.bbox.y1.min(rows.end));
@@ -136,7 +146,8 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
     // every pixel, the row loop is the same for every triangle, without a branch per edge
     // (which kind an edge is changes from triangle to triangle). A horizontal edge allows
     // whole rows or none, so it limits the rows instead.
-    let (mut lows, mut highs) = ([Quotient::fixed(0); 2], [Quotient::fixed(width - 1); 2]);
+    // Lanes 0 and 1 are lows, 2 and 3 highs: n / 1 with dn = 0 is a bound that stays.
+    let (mut n, mut dn, mut d) = ([0, 0, width - 1, width - 1], [0; 4], [1; 4]);
     let (mut n_low, mut n_high) = (0, 0);
     let mut kept = y0..y1;
     for e in &t.edges {
@@ -144,18 +155,15 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
         let dbase = (e.b as i64) << SUBPIXEL_BITS;
         let step = (e.a as i64) << SUBPIXEL_BITS;
         // A single row never steps (common: most small triangles meet a band in a row or
-        // two), so it needs no division for the step.
-        let dn = if y1 - y0 > 1 { dbase } else { 0 };
-        if step > 0 {
-            if let Some(b) = lows.get_mut(n_low) {
-                *b = Quotient::new(base, dn, step);
-            }
+        // two).
+        let grow = if y1 - y0 > 1 { dbase } else { 0 };
+        // A triangle has at most two edges of each kind.
+        let lane = if step > 0 {
             n_low += 1;
+            (n_low <= 2).then_some(n_low - 1)
         } else if step < 0 {
-            if let Some(b) = highs.get_mut(n_high) {
-                *b = Quotient::new(base, dn, -step);
-            }
             n_high += 1;
+            (n_high <= 2).then_some(n_high + 1)
         } else {
             // base + i·dbase ≥ 0 on row y0 + i: from −⌊base/dbase⌋ on when it grows, up to
             // ⌊base/−dbase⌋ when it falls, every row or none when it stays.
@@ -167,14 +175,18 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
             };
             let row = |i: i64| (y0 as i64).saturating_add(i).clamp(y0 as i64, y1 as i64) as i32;
             kept = kept.start.max(row(first))..kept.end.min(row(last.saturating_add(1)));
+            continue;
+        };
+        if let Some(k) = lane {
+            (n[k], dn[k], d[k]) = (base, grow, step.abs());
         }
     }
+    let mut bounds = Quotients::new(n, dn, d);
     for y in y0..y1 {
-        let lo = 0.max(-lows[0].q).max(-lows[1].q);
-        let hi = width.min(highs[0].q + 1).min(highs[1].q + 1);
-        for q in lows.iter_mut().chain(&mut highs) {
-            q.step();
-        }
+        let q = bounds.q;
+        let lo = 0.max(-q[0]).max(-q[1]);
+        let hi = width.min(q[2] + 1).min(q[3] + 1);
+        bounds.step();
         if lo < hi && kept.contains(&y) {
             emit(Span {
                 y,
@@ -200,7 +212,7 @@ mod tests {
         let f = p.map(|p| layout.pack(&ClipVertex::new(p, Vec4::ONE)));
         let v = f.each_ref().map(|f| layout.view(f));
         let mut kept = None;
-        setup::triangle(state, v, v[2], bounds, None, &mut kept);
+        setup::triangle(state, v, None, v[2], bounds, None, &mut kept);
         kept
     }
 
@@ -224,6 +236,36 @@ mod tests {
         }
         assert_eq!(got, want, "triangle {n}");
         count
+    }
+
+    #[test]
+    fn floor_div_matches_integer_division() {
+        // Near the largest magnitudes, near multiples of d (where the f64 quotient rounds
+        // to an integer from either side) and at random.
+        let mut rng = Lcg(3);
+        let mut rand = |bits: u32| ((rng.next() as f64) * (1u64 << bits) as f64) as i64;
+        let mut cases = Vec::new();
+        for d in [1, 3, 256, 255 << 8, (1 << 33) - 256, (1 << 52) - 1] {
+            for q in [0i64, 1, 2, 1 << 20, (1 << 52) / d - 1] {
+                let Some(n) = q.checked_mul(d) else { continue };
+                cases.extend((-2..=2).map(|e| (n + e, d)));
+            }
+            for _ in 0..200 {
+                cases.push((rand(52) - rand(52), d));
+                cases.push((rand(52) / d * d + rand(3) - 4, d));
+            }
+        }
+        for (n, d) in cases {
+            for n in [n, -n] {
+                if n.abs() < 1 << 52 {
+                    assert_eq!(
+                        floor_div(n, d),
+                        (n.div_euclid(d), n.rem_euclid(d)),
+                        "{n} / {d}"
+                    );
+                }
+            }
+        }
     }
 
     /// Both ways of finding a row's pixels (the edge functions at each center for narrow

@@ -8,6 +8,7 @@ use glam::Vec3;
 use glam::{Mat3, Mat4, Vec4};
 
 use super::lighting::Prepared;
+use super::window::ViewportTransform;
 #[cfg(test)]
 use super::ClipVertex;
 use super::{AttribArray, AttribSource, DrawCall, Indices, Layout, Primitive, GUARD, W_MIN};
@@ -81,6 +82,9 @@ pub(super) struct Stage<'s, 'd> {
     /// Lighting after transforming, only of the vertices whose colors are read (see
     /// [`Deferred`]).
     pub deferred: Option<Deferred>,
+    /// Triangles that share vertices have their corners taken to window coordinates
+    /// here (see [`super::window`]).
+    pub window: Option<ViewportTransform>,
 }
 
 /// Lighting after the positions are known, for lit non-indexed triangles and flat-shaded
@@ -169,6 +173,11 @@ impl<'s, 'd> Stage<'s, 'd> {
             reflection: texgen(TexGen::ReflectionMap),
             layout,
             deferred,
+            window: match (draw.primitive, draw.indices) {
+                (Primitive::Triangles, Indices::Range { .. }) => None,
+                (p, _) if p == Primitive::Points || p.is_line() => None,
+                _ => Some(ViewportTransform::new(state)),
+            },
         }
     }
 
@@ -316,9 +325,15 @@ impl<'s, 'd> Stage<'s, 'd> {
     /// as `write` (the tests' one-vertex statement) would one by one and bit for bit
     /// alike, with positions, normals and colors as structures of arrays so transform,
     /// normalization and lighting vectorize across vertices. Only what the layout keeps
-    /// is computed. Returns the vertices' [`reject_code`](super::reject_code)s.
+    /// is computed. Returns the vertices' [`reject_code`](super::reject_code)s and their
+    /// clip positions.
     #[inline(always)]
-    pub fn write_lanes(&self, idx: &[usize; LANES], out: &mut [f32], light: bool) -> Lane<u32> {
+    pub fn write_lanes(
+        &self,
+        idx: &[usize; LANES],
+        out: &mut [f32],
+        light: bool,
+    ) -> (Lane<u32>, [Lane<f32>; 4]) {
         let layout = &self.layout;
         let stride = layout.stride;
         let mut p = [[0.0; LANES]; 4];
@@ -399,7 +414,7 @@ impl<'s, 'd> Stage<'s, 'd> {
                 }
             }
         }
-        reject_codes(&pos)
+        (reject_codes(&pos), pos)
     }
 
     /// The eye positions of vertices `idx` at object positions `p`: the modelview's
@@ -730,7 +745,7 @@ fn clamp01(c: Vec4) -> Vec4 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{rejects, run, AttribSource, ComponentType, Indices, CLIPS};
+    use super::super::{rejects, run, AttribSource, ComponentType, Indices, Window, CLIPS};
     use super::*;
     use crate::texenv::TextureUnit;
 
@@ -1361,6 +1376,58 @@ mod tests {
         assert!(seen[0] && seen[CLIPS as usize], "{seen:?}");
         for bit in 0..5 {
             assert!((0..64).any(|c| c >> bit & 1 == 1 && seen[c]), "bit {bit}");
+        }
+    }
+
+    #[test]
+    fn shared_corners_get_their_window_coordinates_in_the_vertex_stage() {
+        let mut s = RenderState::new(97, 61);
+        s.viewport = crate::state::Viewport {
+            x: -13,
+            y: 7,
+            width: 97,
+            height: 61,
+        };
+        s.depth_range = [0.25, 0.9];
+        // 21 vertices (two groups of eight and a short one) in and around the view.
+        let mut rng = crate::tests::Lcg(11);
+        let mut v = Vec::new();
+        for _ in 0..21 {
+            let w = 0.5 + 3.0 * rng.next();
+            let mut c = || (rng.next() * 4.0 - 2.0) * w;
+            v.extend([c(), c(), c() * 0.5, w]);
+        }
+        let b = bytes(&v);
+        let mut d = draw(&b, Primitive::TriangleStrip, 21);
+        (d.position.size, d.position.stride) = (4, 16);
+        let viewport = ViewportTransform::new(&s);
+        let bits = |w: [Window; 3]| w.map(|w| (w.x, w.y, w.z.to_bits(), w.inv_w.to_bits()));
+        let ix: Vec<u16> = (0..21).rev().collect();
+        for (prim, indices) in [
+            (Primitive::TriangleStrip, d.indices),
+            (Primitive::TriangleFan, d.indices),
+            (Primitive::Triangles, Indices::U16(&ix)),
+        ] {
+            (d.primitive, d.indices) = (prim, indices);
+            let out = run(&s, &d).unwrap();
+            for i in 0..19 {
+                let k = [i, i + 1, i + 2].map(|i| out.slot(i));
+                let got = out.corners(k).expect("shared vertices");
+                let want = viewport.corners(k.map(|k| out.at(k).pos()));
+                assert_eq!(bits(got), bits(want), "{prim:?} {i}");
+            }
+        }
+        // Lines, points and a list of separate triangles leave it to set-up.
+        d.indices = Indices::Range {
+            first: 0,
+            count: 21,
+        };
+        for prim in [Primitive::Lines, Primitive::Points, Primitive::Triangles] {
+            d.primitive = prim;
+            assert!(
+                run(&s, &d).unwrap().corners([0, 1, 2]).is_none(),
+                "{prim:?}"
+            );
         }
     }
 
