@@ -11,20 +11,25 @@ use super::super::target::Rect;
 use super::super::SUBPIXEL_BITS;
 use super::Span;
 
-/// `(⌊n / d⌋, n mod d)` for d > 0 and |n|, d < 2⁵² (exact as f64), by an f64 division:
-/// rounding is monotonic and keeps integers, so the rounded quotient lies between the same
-/// two integers as the exact one, and its truncation is ⌊n / d⌋ or, when it rounded up to
-/// the next integer or is negative, one more, which a negative remainder reveals. Lanes
-/// of these are vector divisions, where 64-bit integer divisions go one at a time.
+/// `(⌊n / d⌋, n mod d)` for |n| < 2⁵², 0 < d < 2⁵¹ and |n / d| < 2⁵⁰: the rows'
+/// bounds, where d is a whole subpixel step below 2³³ (so |n / d| < 2⁴⁴) or 1 for the
+/// bounds that stay (n below the box's width). In f64 arithmetic that
+/// vectorizes (64-bit integer division, multiplication and conversion from f64 do not, on
+/// AVX2). Rounding is monotonic and keeps integers, so the rounded quotient lies between
+/// the same two integers as the exact one, and its truncation q is ⌊n / d⌋ or, when it
+/// rounded up to the next integer or is negative, one more. Every step after the division
+/// is exact: q·d is an integer within d of n (below 2⁵³), n − q·d is below 2d, and a
+/// negative remainder reveals the one more. q and 0 ≤ r < d, both below 2⁵¹, become
+/// integers by the 1.5 · 2⁵² add.
 #[inline(always)]
 fn floor_div(n: i64, d: i64) -> (i64, i64) {
-    let q = (n as f64 / d as f64) as i64;
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    let (n, d) = (n as f64, d as f64);
+    let q = (n / d).trunc();
     let r = n - q * d;
-    if r < 0 {
-        (q - 1, r + d)
-    } else {
-        (q, r)
-    }
+    let (q, r) = if r < 0.0 { (q - 1.0, r + d) } else { (q, r) };
+    let int = |v: f64| ((v + MAGIC).to_bits() as i64).wrapping_sub(MAGIC.to_bits() as i64);
+    (int(q), int(r))
 }
 
 /// The four bounds of a row's pixels, two lows then two highs, as lanes: each ⌊n / d⌋ for a
@@ -245,7 +250,7 @@ mod tests {
         let mut rng = Lcg(3);
         let mut rand = |bits: u32| ((rng.next() as f64) * (1u64 << bits) as f64) as i64;
         let mut cases = Vec::new();
-        for d in [1, 3, 256, 255 << 8, (1 << 33) - 256, (1 << 52) - 1] {
+        for d in [1, 3, 256, 255 << 8, (1 << 33) - 256, (1 << 51) - 1] {
             for q in [0i64, 1, 2, 1 << 20, (1 << 52) / d - 1] {
                 let Some(n) = q.checked_mul(d) else { continue };
                 cases.extend((-2..=2).map(|e| (n + e, d)));
@@ -257,7 +262,7 @@ mod tests {
         }
         for (n, d) in cases {
             for n in [n, -n] {
-                if n.abs() < 1 << 52 {
+                if n.abs() < 1 << 52 && (n / d).abs() < 1 << 50 {
                     assert_eq!(
                         floor_div(n, d),
                         (n.div_euclid(d), n.rem_euclid(d)),
