@@ -1,5 +1,5 @@
 //! Triangle setup: from corners in window space (snapped to [`SUBPIXEL_BITS`] fixed-point
-//! subpixels by the vertex stage), integer edge functions with a top-left fill rule,
+//! subpixels by [`ViewportTransform`]), integer edge functions with a top-left fill rule,
 //! facing and culling, and the planes of the attributes.
 
 use super::state::{CullFace, RenderState, ShadeModel, Winding};
@@ -28,8 +28,8 @@ pub(crate) fn round_i64(v: f64) -> i64 {
 /// test and a pixel on an edge shared by two triangles is drawn by exactly one of them.
 ///
 /// `a` and `b` are differences of snapped coordinates, below 2²⁵ in magnitude (see
-/// [`crate::clip::GUARD`]), so they fit an i32; with the bias derived from them rather than stored
-/// an edge takes 16 bytes, and every primitive copied into a frame 48 fewer.
+/// [`crate::clip::GUARD`]), so they fit an i32; with the bias derived from them rather than
+/// stored an edge takes 16 bytes, and every primitive copied into a frame 48 fewer.
 #[derive(Clone, Copy, Debug)]
 pub struct Edge {
     pub a: i32,

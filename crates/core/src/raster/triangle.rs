@@ -11,11 +11,10 @@ use super::super::target::Rect;
 use super::super::SUBPIXEL_BITS;
 use super::Span;
 
-/// `(⌊n / d⌋, n mod d)` for |n| < 2⁵², 0 < d < 2⁵¹ and |n / d| < 2⁵⁰: the rows'
-/// bounds, where d is a whole subpixel step below 2³³ (so |n / d| < 2⁴⁴) or 1 for the
-/// bounds that stay (n below the box's width). In f64 arithmetic that
-/// vectorizes (64-bit integer division, multiplication and conversion from f64 do not, on
-/// AVX2). Rounding is monotonic and keeps integers, so the rounded quotient lies between
+/// `(⌊n / d⌋, n mod d)` for |n| < 2⁵², 0 < d < 2⁵¹ and |n / d| < 2⁵⁰: the rows' bounds,
+/// where d is a whole subpixel step below 2³³ (so |n / d| < 2⁴⁴) or 1 for the bounds that
+/// stay (n below the box's width). In f64 arithmetic that vectorizes (64-bit integer
+/// division, multiplication and conversion from f64 do not, on AVX2). Rounding is monotonic and keeps integers, so the rounded quotient lies between
 /// the same two integers as the exact one, and its truncation q is ⌊n / d⌋ or, when it
 /// rounded up to the next integer or is negative, one more. Every step after the division
 /// is exact: q·d is an integer within d of n (below 2⁵³), n − q·d is below 2d, and a
@@ -159,9 +158,6 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
         let base = e.at_center((x0 - ox) as i64, ry) - e.bias();
         let dbase = (e.b as i64) << SUBPIXEL_BITS;
         let step = (e.a as i64) << SUBPIXEL_BITS;
-        // A single row never steps (common: most small triangles meet a band in a row or
-        // two).
-        let grow = if y1 - y0 > 1 { dbase } else { 0 };
         // A triangle has at most two edges of each kind.
         let lane = if step > 0 {
             n_low += 1;
@@ -183,7 +179,7 @@ pub fn spans(t: &Triangle, rows: std::ops::Range<i32>, mut emit: impl FnMut(Span
             continue;
         };
         if let Some(k) = lane {
-            (n[k], dn[k], d[k]) = (base, grow, step.abs());
+            (n[k], dn[k], d[k]) = (base, dbase, step.abs());
         }
     }
     let mut bounds = Quotients::new(n, dn, d);

@@ -13,21 +13,12 @@ use crate::SUBPIXEL_BITS;
 
 /// A triangle corner in window space: x and y snapped to 1/2^[`SUBPIXEL_BITS`] pixel, z in
 /// the depth range (clamped to [0, 1]) and 1/w.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Window {
     pub x: i64,
     pub y: i64,
     pub z: f64,
     pub inv_w: f64,
-}
-
-impl Window {
-    const UNKNOWN: Window = Window {
-        x: 0,
-        y: 0,
-        z: 0.0,
-        inv_w: 0.0,
-    };
 }
 
 /// `round_i64` of set-up for |v| < 2⁵¹ and NaN (0, as there): a window coordinate in
@@ -87,7 +78,7 @@ impl ViewportTransform {
             z[k] = ((p[2][k] as f64 * iw) * (f - n) * 0.5 + (f + n) * 0.5).clamp(0.0, 1.0);
             inv_w[k] = iw;
         }
-        let mut out = [Window::UNKNOWN; N];
+        let mut out = [Window::default(); N];
         for k in 0..N {
             out[k] = Window {
                 x: x[k],
