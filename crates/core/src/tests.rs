@@ -298,8 +298,7 @@ fn triangles_behind_the_eye_leave_no_garbage() {
     );
 }
 
-/// A small deterministic generator so the scene is the same on every run.
-/// A seeded generator of test data: the next value in [0, 1).
+/// A seeded generator of test data, the same on every run: the next value in [0, 1).
 pub(crate) struct Lcg(pub(crate) u64);
 impl Lcg {
     pub(crate) fn next(&mut self) -> f32 {

@@ -14,12 +14,13 @@ use super::Span;
 /// `(⌊n / d⌋, n mod d)` for |n| < 2⁵², 0 < d < 2⁵¹ and |n / d| < 2⁵⁰: the rows' bounds,
 /// where d is a whole subpixel step below 2³³ (so |n / d| < 2⁴⁴) or 1 for the bounds that
 /// stay (n below the box's width). In f64 arithmetic that vectorizes (64-bit integer
-/// division, multiplication and conversion from f64 do not, on AVX2). Rounding is monotonic and keeps integers, so the rounded quotient lies between
-/// the same two integers as the exact one, and its truncation q is ⌊n / d⌋ or, when it
-/// rounded up to the next integer or is negative, one more. Every step after the division
-/// is exact: q·d is an integer within d of n (below 2⁵³), n − q·d is below 2d, and a
-/// negative remainder reveals the one more. q and 0 ≤ r < d, both below 2⁵¹, become
-/// integers by the 1.5 · 2⁵² add.
+/// division, multiplication and conversion from f64 do not, on AVX2). Rounding is
+/// monotonic and keeps integers, so the rounded quotient lies between the same two
+/// integers as the exact one, and its truncation q is ⌊n / d⌋ or, when it rounded up to
+/// the next integer or is negative, one more. Every step after the division is exact: q·d
+/// is an integer within d of n (below 2⁵³), n − q·d is below 2d, and a negative remainder
+/// reveals the one more. q and 0 ≤ r < d, both below 2⁵¹, become integers by the
+/// 1.5 · 2⁵² add.
 #[inline(always)]
 fn floor_div(n: i64, d: i64) -> (i64, i64) {
     const MAGIC: f64 = 6_755_399_441_055_744.0;
