@@ -75,9 +75,6 @@ const F_MULTI: u8 = 5;
 pub struct TexStage {
     units: Vec<(usize, TextureUnit)>,
     fog: Option<Fog>,
-    /// Level of detail per pixel (PERSPECTIVE_CORRECTION_HINT NICEST or DONT_CARE), else
-    /// exact every [`PERSPECTIVE_STEP`] pixels and linear in between (FASTEST).
-    lod_per_pixel: bool,
     /// An environment reads another unit's texel (`OES_texture_env_crossbar`): every unit
     /// is sampled before the first environment, on the general route only.
     crossbar: bool,
@@ -102,7 +99,6 @@ impl TexStage {
         Some(TexStage {
             units,
             fog: state.fog,
-            lod_per_pixel: state.perspective != Quality::Fastest,
             crossbar,
             anisotropic,
         })
@@ -329,11 +325,6 @@ impl UnitCoords {
 struct SpanTexturing<'a> {
     stage: &'a TexStage,
     spans: [UnitCoords; TEXTURE_UNITS],
-    /// Per unit, when λ is not computed per pixel: the first pixel of the run of
-    /// [`PERSPECTIVE_STEP`] pixels set up last, λ there and its linear step per pixel (from
-    /// the exact λ at both ends of the run).
-    lambda: [(usize, f32, f32); TEXTURE_UNITS],
-    len: usize,
     fog0: f32,
     dfog: f32,
     inv_w0: f32,
@@ -356,38 +347,11 @@ impl<'a> SpanTexturing<'a> {
         SpanTexturing {
             stage,
             spans,
-            lambda: [(usize::MAX, 0.0, 0.0); TEXTURE_UNITS],
-            len: (span.x1 - span.x0).max(1) as usize,
             fog0: t.fog.at(px, py) as f32,
             dfog: t.fog.dx as f32,
             inv_w0: t.inv_w.at(px, py) as f32,
             d_inv_w: t.inv_w.dx as f32,
         }
-    }
-
-    #[inline(always)]
-    fn lambda_at(&mut self, n: usize, i: usize, s: f32, t: f32) -> f32 {
-        if self.stage.lod_per_pixel {
-            return self.spans[n].lambda(i, s, t);
-        }
-        let start = i - i % PERSPECTIVE_STEP;
-        if self.lambda[n].0 != start {
-            let ts = &self.spans[n];
-            let exact = |j: usize| {
-                let (s, t) = ts.st(j);
-                ts.lambda(j, s, t)
-            };
-            let end = (start + PERSPECTIVE_STEP).min(self.len - 1);
-            let l0 = exact(start);
-            let step = if end > start {
-                (exact(end) - l0) / (end - start) as f32
-            } else {
-                0.0
-            };
-            // An infinite end (ρ = 0) leaves λ constant over the run.
-            self.lambda[n] = (start, l0, if step.is_finite() { step } else { 0.0 });
-        }
-        self.lambda[n].1 + self.lambda[n].2 * (i - start) as f32
     }
 
     /// Fog on `c` at pixel `i`.
@@ -450,7 +414,7 @@ impl<'a> SpanTexturing<'a> {
         if unit.sampler.max_anisotropy > 1.0 {
             return self.spans[n].anisotropic(&unit.sampler, i, s, t);
         }
-        let lambda = self.lambda_at(n, i, s, t);
+        let lambda = self.spans[n].lambda(i, s, t);
         unit.sampler.sample(s, t, lambda)
     }
 }
@@ -634,13 +598,6 @@ impl FragmentKey {
         }
     }
 }
-
-/// Pixels between exact levels of detail under `GL_PERSPECTIVE_CORRECTION_HINT`
-/// `GL_FASTEST`; λ is interpolated linearly in between. Colors are divided exactly under
-/// every hint: on the 8-wide routes the divide is one instruction per group, and stepping
-/// it (two divides per run plus the slope) measured slower (gears-1280-565: 6.74 ms
-/// stepped against 5.72 ms exact).
-pub const PERSPECTIVE_STEP: usize = 8;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Divide {

@@ -7,10 +7,9 @@
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Quality {
     /// Documented shortcuts. As the perspective hint (which governs the fragment stage's
-    /// precision): texture λ exact every [`crate::fragment::PERSPECTIVE_STEP`] pixels
-    /// and interpolated linearly in between, and blending on narrow color formats reads
-    /// the destination with a reciprocal multiply instead of a division (at most 1 ulp off,
-    /// so within 2 steps of DONT_CARE). As the fog hint: the factor per vertex. As the
+    /// precision): blending on narrow color formats reads the destination with a
+    /// reciprocal multiply instead of a division (at most 1 ulp off, so within 2 steps of
+    /// DONT_CARE). As the fog hint: the factor per vertex. As the
     /// point and line smooth hints: 2 × 2 coverage samples for antialiasing.
     Fastest,
     /// The default: exact perspective, 4 × 4 coverage samples.

@@ -1143,7 +1143,7 @@ fn perspective_hints_divide_colors_exactly() {
         errors.push(reference::compare(&fast, &slow));
     }
     // Exact divides under every hint (FASTEST's stepped divide measured slower on the
-    // 8-wide routes; see `fragment::PERSPECTIVE_STEP`): one step of rounding at most, off
+    // 8-wide routes; ARCHITECTURE.md decision 4): one step of rounding at most, off
     // edges, and the same image whatever the hint.
     assert!(errors[1].mean < 0.1, "{errors:?}");
     assert!(

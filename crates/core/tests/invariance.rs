@@ -12,7 +12,7 @@ use gles_cm_core::state::{
     StencilTest, TexGen,
 };
 use gles_cm_core::texenv::{EnvMode, Fog, FogMode, TexEnv, TextureUnit};
-use gles_cm_core::texture::{MagFilter, MinFilter};
+use gles_cm_core::texture::{MagFilter, MinFilter, Wrap};
 use gles_cm_core::{CompareFunc, Frame, Rect, RenderState, Target};
 use scenes::Mesh;
 
@@ -544,10 +544,12 @@ fn lod_filters_and_combine_agree_across_span_routines() {
 }
 
 /// Every span route the vectorized code has (simple: depth × smooth (DONT_CARE and
-/// FASTEST hints) × blend, including the one-word fill; textured: fog only, NEAREST, bilinear, trilinear, other filters, several
-/// units; with and without depth and blending) on every color format, with dithering off
-/// and on, gives the pixels of the per-pixel routine (alpha test ALWAYS, an unrelated state
-/// that only the per-pixel routine handles).
+/// FASTEST hints) × blend, including the one-word fill and small triangles' short spans;
+/// textured: fog only, NEAREST, bilinear, trilinear (λ per pixel and FASTEST's), other
+/// filters, several units, sizes other than powers of two under each wrap mode; with and
+/// without depth and blending) on every color format, with dithering off and on, gives the
+/// pixels of the per-pixel routine (alpha test ALWAYS, an unrelated state that only the
+/// per-pixel routine handles).
 #[test]
 fn every_route_on_every_format_agrees_with_the_per_pixel_routine() {
     use gles_cm_core::{ColorFormat, DepthFormat, TargetFormat};
@@ -613,6 +615,15 @@ fn every_route_on_every_format_agrees_with_the_per_pixel_routine() {
                     scenes::floor,
                 ));
             }
+            // Spans too short for a group of their own, drawn pixel by pixel.
+            routes.push((
+                format!("small smooth, {how}"),
+                setup(smooth.clone()),
+                || scenes::small_triangles(300, 15),
+            ));
+            routes.push((format!("small flat, {how}"), flat.clone(), || {
+                scenes::small_triangles(300, 16)
+            }));
             routes.push((format!("flat, {how}"), flat, || {
                 scenes::smooth_triangles(40, 12)
             }));
@@ -640,9 +651,36 @@ fn every_route_on_every_format_agrees_with_the_per_pixel_routine() {
                     scenes::floor,
                 ));
             }
+            // GL_FASTEST perspective hint (λ per pixel as under the others; a narrow
+            // destination blended through a reciprocal).
+            let fastest = |min, mag| scenes::floor_state(W, H, min, mag, Quality::Fastest);
+            for min in [
+                MinFilter::LinearMipmapLinear,
+                MinFilter::NearestMipmapNearest,
+            ] {
+                routes.push((
+                    format!("{min:?} FASTEST, {how}"),
+                    setup(fastest(min, MagFilter::Linear)),
+                    scenes::floor,
+                ));
+            }
             let mut two = setup(floor(MinFilter::Linear, MagFilter::Linear));
             two.textures[1] = two.textures[0].clone();
             routes.push((format!("two units, {how}"), two, scenes::floor));
+        }
+    }
+    // Sizes other than powers of two wrap by a quotient, each mode its own way.
+    for wrap in [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat] {
+        for (min, mag) in [
+            (MinFilter::Nearest, MagFilter::Nearest),
+            (MinFilter::Linear, MagFilter::Linear),
+            (MinFilter::LinearMipmapLinear, MagFilter::Linear),
+        ] {
+            let mut s = floor(min, mag);
+            if let Some(unit) = s.textures[0].as_mut() {
+                unit.sampler = scenes::texture_sized(37, 23, min, mag, wrap);
+            }
+            routes.push((format!("37x23 {wrap:?} {min:?}/{mag:?}"), s, scenes::floor));
         }
     }
     for format in formats {

@@ -804,9 +804,10 @@ fn simple_pixels<const DEPTH: bool, const SMOOTH: bool, const BLEND: bool>(
     }
 }
 
-/// Texel-space coordinates below this magnitude take the vectorized floor; beyond it (or
-/// NaN) a group samples pixel by pixel with the scalar sampler.
-const FAST_COORD: f32 = 4_194_304.0;
+/// Texel-space coordinates below this magnitude take the vectorized floor and wrap; beyond
+/// it (or NaN) a group samples pixel by pixel with the scalar sampler. 2²¹ keeps the
+/// integer coordinates within ±2²¹, where [`wrap_npot`] is exact in f32.
+const FAST_COORD: f32 = 2_097_152.0;
 
 /// `floor(u)` as an integer and as a float for |u| < 2²², vectorizable: adding 1.5 · 2²³
 /// rounds to an integer (to nearest), one step down corrects rounding up, and the integer
@@ -844,23 +845,74 @@ fn st_lanes(ts: &UnitCoords, i0: usize) -> (Lane<f32>, Lane<f32>, Lane<f32>) {
 }
 
 /// Wrapped texel indices of integer coordinates (`Wrap::index`, one decision per group:
-/// `wrap` and `n` are the same for every lane, so each arm's loop vectorizes).
+/// `wrap` and `n` are the same for every lane, so each arm's loop vectorizes). |i| ≤ 2²¹.
 #[inline(always)]
 fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
+    if n & (n - 1) == 0 || wrap == Wrap::ClampToEdge {
+        wrap_pot(wrap, i, n);
+    } else {
+        wrap_npot(wrap, i, None, n);
+    }
+}
+
+/// [`wrap_lanes`] of `i` and of its right or lower neighbours `i + 1`, into `next`.
+#[inline(always)]
+fn wrap_pair_lanes(wrap: Wrap, i: &mut Lane<i32>, next: &mut Lane<i32>, n: i32) {
+    if n & (n - 1) == 0 || wrap == Wrap::ClampToEdge {
+        for j in 0..LANES {
+            next[j] = i[j] + 1;
+        }
+        wrap_pot(wrap, i, n);
+        wrap_pot(wrap, next, n);
+    } else {
+        wrap_npot(wrap, i, Some(next), n);
+    }
+}
+
+/// [`wrap_lanes`] for `n` a power of two, or under CLAMP_TO_EDGE (which clamps alike at
+/// every size).
+#[inline(always)]
+fn wrap_pot(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
     use Wrap::*;
     let lanes = i.iter_mut();
-    if n & (n - 1) == 0 {
-        match wrap {
-            Repeat => lanes.for_each(|i| *i = Repeat.index_pot(*i, n)),
-            ClampToEdge => lanes.for_each(|i| *i = ClampToEdge.index_pot(*i, n)),
-            MirroredRepeat => lanes.for_each(|i| *i = MirroredRepeat.index_pot(*i, n)),
-        }
+    match wrap {
+        Repeat => lanes.for_each(|i| *i = Repeat.index_pot(*i, n)),
+        ClampToEdge => lanes.for_each(|i| *i = ClampToEdge.index_pot(*i, n)),
+        MirroredRepeat => lanes.for_each(|i| *i = MirroredRepeat.index_pot(*i, n)),
+    }
+}
+
+/// [`wrap_lanes`] (and [`wrap_pair_lanes`] with `next`) under REPEAT or MIRRORED_REPEAT
+/// for `n` not a power of two.
+///
+/// The remainder m of i modulo the period p (n, or 2n mirrored) comes from an f32 quotient,
+/// eight lanes to a register where `Wrap::index_npot`'s f64 takes two and conversions: for
+/// |i| ≤ 2²¹, i + ½ is exact in f32, (i + ½)/p lies at least 1/(2p) from every integer, and
+/// the computed product (i + ½)·fl(1/p) is within (2²¹ + ½)/p · 2⁻²³ · (1 + 2⁻²⁴) < 1/(2p)
+/// of it, so its floor is ⌊i/p⌋. The neighbour's remainder is m + 1, or 0 at the end of
+/// the period, so it needs no second quotient; mirroring reflects both.
+#[inline(always)]
+fn wrap_npot(wrap: Wrap, i: &mut Lane<i32>, next: Option<&mut Lane<i32>>, n: i32) {
+    let p = if wrap == Wrap::MirroredRepeat {
+        2 * n
     } else {
-        match wrap {
-            Repeat => lanes.for_each(|i| *i = Repeat.index_npot(*i, n)),
-            ClampToEdge => lanes.for_each(|i| *i = ClampToEdge.index_npot(*i, n)),
-            MirroredRepeat => lanes.for_each(|i| *i = MirroredRepeat.index_npot(*i, n)),
+        n
+    };
+    let inv = 1.0 / p as f32;
+    let mut m = [0; LANES];
+    for j in 0..LANES {
+        let (q, _) = floor_i32((i[j] as f32 + 0.5) * inv);
+        m[j] = i[j] - q * p;
+    }
+    // Under REPEAT every remainder is below n and the reflection changes nothing.
+    if let Some(next) = next {
+        for j in 0..LANES {
+            let m1 = if m[j] + 1 == p { 0 } else { m[j] + 1 };
+            next[j] = if m1 >= n { p - 1 - m1 } else { m1 };
         }
+    }
+    for j in 0..LANES {
+        i[j] = if m[j] >= n { p - 1 - m[j] } else { m[j] };
     }
 }
 
@@ -1009,11 +1061,9 @@ fn sample_level(
         }
         return true;
     }
-    let (mut i1, mut j1) = (i.map(|i| i.wrapping_add(1)), jj.map(|j| j.wrapping_add(1)));
-    wrap_lanes(sm.wrap_s, &mut i, wi);
-    wrap_lanes(sm.wrap_s, &mut i1, wi);
-    wrap_lanes(sm.wrap_t, &mut jj, hi);
-    wrap_lanes(sm.wrap_t, &mut j1, hi);
+    let (mut i1, mut j1) = ([0; LANES], [0; LANES]);
+    wrap_pair_lanes(sm.wrap_s, &mut i, &mut i1, wi);
+    wrap_pair_lanes(sm.wrap_t, &mut jj, &mut j1, hi);
     // Where no lane's right neighbour wraps around, the two texels of a row are adjacent
     // and come as one pair (half the loads).
     let mut adjacent = texels.len() >= 2;
@@ -1076,31 +1126,11 @@ fn lerp_lanes(x: &Lane<f32>, y: &Lane<f32>, t: &Lane<f32>) -> Lane<f32> {
     out
 }
 
-/// λ of unit 0 for the group (`SpanTexturing::lambda_at`): ρ² vectorized when λ is per pixel,
-/// the logarithm per lane.
+/// λ of a unit's coordinates `ts` for the group (`UnitCoords::lambda` of each lane): ρ²
+/// and the logarithm as vectors.
 #[inline(always)]
-fn lambda_lanes(
-    tex: &mut SpanTexturing,
-    n: usize,
-    i0: usize,
-    s: &Lane<f32>,
-    t: &Lane<f32>,
-    r: &Lane<f32>,
-) -> Lane<f32> {
+fn lambda_lanes(ts: &UnitCoords, s: &Lane<f32>, t: &Lane<f32>, r: &Lane<f32>) -> Lane<f32> {
     let mut out = [0.0; LANES];
-    if !tex.stage.lod_per_pixel {
-        let m = LANES.min(tex.len - i0);
-        for j in 0..m {
-            out[j] = tex.lambda_at(n, i0 + j, s[j], t[j]);
-        }
-        // Lanes past the span repeat the last one's λ, so that they do not stop the group
-        // from sampling as one.
-        for j in m..LANES {
-            out[j] = out[m - 1];
-        }
-        return out;
-    }
-    let ts = &tex.spans[n];
     let mut rho2 = [0.0f32; LANES];
     for j in 0..LANES {
         // UnitCoords::lambda, written out (on affine spans r is 1, which changes no bit).
@@ -1126,20 +1156,17 @@ fn lambda_lanes(
 /// otherwise. `TRI`: the pair is LINEAR_MIPMAP_LINEAR and LINEAR (the code for the other
 /// pairs left out).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 fn mipmap_lanes<const TRI: bool>(
     sm: &Sampler,
-    tex: &mut SpanTexturing,
-    n: usize,
-    i0: usize,
+    ts: &UnitCoords,
     s: &Lane<f32>,
     t: &Lane<f32>,
     r: &Lane<f32>,
     out: &mut Channels,
 ) -> bool {
-    // Every lane, those past the span's end included (their λ is extrapolated or
-    // repeated), so that the tests vectorize.
-    let mut lambda = lambda_lanes(tex, n, i0, s, t, r);
+    // Every lane, those past the span's end included (their λ is extrapolated), so that
+    // the tests vectorize.
+    let mut lambda = lambda_lanes(ts, s, t, r);
     for l in lambda.iter_mut() {
         *l += sm.lod_bias;
     }
@@ -1415,8 +1442,8 @@ fn unit_texels(
     let fast = match filter {
         F_NEAREST => sample_level(sm, 0, false, INV_255, &s, &tt, &mut texel),
         F_BILINEAR => sample_level(sm, 0, true, INV_255, &s, &tt, &mut texel),
-        F_TRILINEAR => mipmap_lanes::<true>(sm, tex, n, i0, &s, &tt, &r, &mut texel),
-        F_LOD => mipmap_lanes::<false>(sm, tex, n, i0, &s, &tt, &r, &mut texel),
+        F_TRILINEAR => mipmap_lanes::<true>(sm, &tex.spans[n], &s, &tt, &r, &mut texel),
+        F_LOD => mipmap_lanes::<false>(sm, &tex.spans[n], &s, &tt, &r, &mut texel),
         _ => false,
     };
     if !fast {
@@ -1447,7 +1474,7 @@ fn texels_by_pixel(
         let v = match filter {
             F_NEAREST => sm.nearest(0, s, tt),
             F_BILINEAR => sm.bilinear(0, s, tt),
-            _ => sm.sample_255(s, tt, tex.lambda_at(n, i, s, tt)),
+            _ => sm.sample_255(s, tt, tex.spans[n].lambda(i, s, tt)),
         };
         for ch in 0..4 {
             texel[ch][j] = v[ch] * INV_255;
@@ -1631,6 +1658,51 @@ mod tests {
         // The blends that read no destination, at 10 sources each: 6 × 6 factor pairs,
         // SUBTRACT, REVERSE_SUBTRACT, another alpha factor, different equations.
         assert_eq!(constant, (36 + 4) * 10);
+    }
+
+    /// Wrapped indices of a group and of its neighbours, at every size up to 300 and some
+    /// large ones, with coordinates next to multiples of the period, near zero and at the
+    /// ends of the fast range (±2²¹), against `Wrap::index`.
+    #[test]
+    fn wrapped_lanes_and_neighbours_match_the_scalar_wrap() {
+        const EDGE: i32 = 1 << 21;
+        let sizes = (1..=300).chain([1023, 1024, 2047, 2048, 4095, 4096, 8191]);
+        for n in sizes {
+            for wrap in [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat] {
+                let mut coords = vec![-EDGE, -EDGE + 1, EDGE - 2, EDGE - 1];
+                for k in [
+                    -EDGE / (2 * n),
+                    -3,
+                    -2,
+                    -1,
+                    0,
+                    1,
+                    2,
+                    3,
+                    (EDGE - 1) / (2 * n),
+                ] {
+                    for d in -2..=2 {
+                        coords.push(k * n + d);
+                        coords.push(k * 2 * n + d);
+                    }
+                }
+                coords.retain(|&i| (-EDGE..EDGE).contains(&i));
+                for group in coords.chunks(LANES) {
+                    let mut i = [0; LANES];
+                    i[..group.len()].copy_from_slice(group);
+                    let (mut got, mut next) = (i, [0; LANES]);
+                    wrap_pair_lanes(wrap, &mut got, &mut next, n);
+                    let mut alone = i;
+                    wrap_lanes(wrap, &mut alone, n);
+                    for j in 0..LANES {
+                        let what = format!("{wrap:?} {} mod {n}", i[j]);
+                        assert_eq!(got[j], wrap.index(i[j], n), "{what}");
+                        assert_eq!(alone[j], got[j], "{what}, alone");
+                        assert_eq!(next[j], wrap.index(i[j] + 1, n), "{what}, next");
+                    }
+                }
+            }
+        }
     }
 
     /// Inputs around every rounding and dithering boundary of the narrow formats, plus values

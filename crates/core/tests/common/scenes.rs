@@ -112,15 +112,27 @@ pub fn perspective_state(w: u32, h: u32, q: Quality) -> RenderState {
 
 /// `n` random smooth-colored triangles at eye depths 2 to 12, strongly tilted in depth.
 pub fn smooth_triangles(n: usize, seed: u64) -> Mesh {
+    triangles(n, seed, 2.0)
+}
+
+/// `n` random smooth-colored triangles a few pixels across (spans shorter than a group),
+/// at eye depths 2 to 12.
+pub fn small_triangles(n: usize, seed: u64) -> Mesh {
+    triangles(n, seed, 0.15)
+}
+
+/// `n` random smooth-colored triangles whose corners lie within `spread` of their center
+/// in x and y, and within 0.75 · `spread` in z.
+fn triangles(n: usize, seed: u64, spread: f32) -> Mesh {
     let mut r = Lcg(seed);
     let (mut pos, mut col) = (Vec::new(), Vec::new());
     for _ in 0..n {
         let (cx, cy, cz) = (r.range(-4.0, 4.0), r.range(-3.0, 3.0), r.range(-12.0, -2.0));
         for _ in 0..3 {
             pos.extend([
-                cx + r.range(-2.0, 2.0),
-                cy + r.range(-2.0, 2.0),
-                cz + r.range(-1.5, 1.5),
+                cx + r.range(-spread, spread),
+                cy + r.range(-spread, spread),
+                cz + r.range(-0.75 * spread, 0.75 * spread),
             ]);
             col.extend([r.next(), r.next(), r.next(), 1.0]);
         }
@@ -168,9 +180,13 @@ pub fn lines_or_points(n: usize, seed: u64, points: bool) -> Mesh {
 }
 
 /// A 64 × 32 texture with detail at every scale (a checker of 4-texel cells over
-/// gradients, so every mip level differs), mipmapped.
+/// gradients, so every mip level differs), mipmapped, repeated.
 pub fn texture(min: MinFilter, mag: MagFilter) -> Arc<Sampler> {
-    let (w, h) = (64u32, 32u32);
+    texture_sized(64, 32, min, mag, Wrap::Repeat)
+}
+
+/// [`texture`] at any size (`OES_texture_npot`) and wrap mode.
+pub fn texture_sized(w: u32, h: u32, min: MinFilter, mag: MagFilter, wrap: Wrap) -> Arc<Sampler> {
     let texels = (0..w * h)
         .map(|i| {
             let (x, y) = (i % w, i / w);
@@ -187,8 +203,8 @@ pub fn texture(min: MinFilter, mag: MagFilter) -> Arc<Sampler> {
     t.generate_mipmap = true;
     t.min_filter = min;
     t.mag_filter = mag;
-    t.wrap_s = Wrap::Repeat;
-    t.wrap_t = Wrap::Repeat;
+    t.wrap_s = wrap;
+    t.wrap_t = wrap;
     t.set_level(
         0,
         Image {

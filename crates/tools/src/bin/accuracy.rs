@@ -666,9 +666,8 @@ fn main() -> ExitCode {
          difference per channel, `PSNR` over all channels, `>1 %` the share of pixels with \
          some channel off by more than one step. The hint is \
          `GL_PERSPECTIVE_CORRECTION_HINT` (and the line and point smooth hints): colors are \
-         divided by w per pixel under every hint; FASTEST computes a texture's level of \
-         detail exactly every 8 pixels and reads a blended narrow destination through a \
-         reciprocal. Mesa softpipe renders the \
+         divided by w and a texture's level of detail computed per pixel under every hint; \
+         FASTEST reads a blended narrow destination through a reciprocal. Mesa softpipe renders the \
          benchmark's scenes through its GL ES 1.1 API (the benchmark's child process code, \
          `GALLIUM_DRIVER=softpipe`) and is compared with the same reference image; the \
          other scenes are not driven through Mesa. The lit scene's reference is given \
