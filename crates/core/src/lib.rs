@@ -65,7 +65,7 @@ fn record_samples(
     {
         if let Some(pass) = pass {
             plane_state.sample = Some(pass);
-            record_pieces(&plane_state, draw, plane, None)?;
+            record_pieces(&plane_state, draw, plane, None, pool::thread_count())?;
         }
     }
     Ok(())
@@ -79,7 +79,7 @@ pub fn record(
     draw: &DrawCall<'_>,
     frame: &mut Frame,
 ) -> Result<(), OutOfMemory> {
-    record_pieces(state, draw, frame, None)
+    record_pieces(state, draw, frame, None, pool::thread_count())
 }
 
 /// Where [`record_into`] sends a frame that fills between pieces of a draw.
@@ -102,15 +102,18 @@ pub fn record_into(
     frame: &mut Frame,
     to: Destination<'_>,
 ) -> Result<(), OutOfMemory> {
-    record_pieces(state, draw, frame, Some(to))
+    record_pieces(state, draw, frame, Some(to), pool::thread_count())
 }
 
-/// [`record`] and [`record_into`]: without a destination the frame is never flushed.
+/// [`record`] and [`record_into`] with `threads` threads for the set-up of long draws (the
+/// library's count, [`pool::thread_count`], but for tests): without a destination the frame is
+/// never flushed.
 fn record_pieces(
     state: &RenderState,
     draw: &DrawCall<'_>,
     frame: &mut Frame,
     mut to: Option<Destination<'_>>,
+    threads: usize,
 ) -> Result<(), OutOfMemory> {
     let bounds = state.pixel_bounds(frame.bounds());
     if bounds.is_empty() {
@@ -133,12 +136,11 @@ fn record_pieces(
         }
     };
     let depth = frame.format().depth;
-    let pieces = pieces(draw);
-    let threads = pool::thread_count().min(pieces.len());
+    let threads = threads.min(pieces(draw).len());
     if threads <= 1 {
         return record_serially(
             state,
-            &pieces,
+            pieces(draw),
             frame,
             &mut make_room,
             &mut key,
@@ -146,12 +148,14 @@ fn record_pieces(
             depth,
         );
     }
+    let pieces: Vec<_> = pieces(draw).collect();
     for batch in pieces.chunks(threads) {
         // While the workers rasterize a frame behind, the cores are theirs: this batch is
         // set up here alone (measured: lit-vbo at 2 threads a third slower with set-up
         // threads crowding them, and as slow with the rasterizing workers taking pieces),
         // straight into the frame.
         if frame.rasterizing() {
+            let batch = batch.iter().copied();
             record_serially(state, batch, frame, &mut make_room, &mut key, bounds, depth)?;
             continue;
         }
@@ -183,9 +187,9 @@ fn record_pieces(
 
 /// The pieces of a draw one after the other on the calling thread.
 #[allow(clippy::too_many_arguments)]
-fn record_serially(
+fn record_serially<'a>(
     state: &RenderState,
-    pieces: &[DrawCall<'_>],
+    pieces: impl Iterator<Item = DrawCall<'a>>,
     frame: &mut Frame,
     make_room: &mut dyn FnMut(&mut Frame, &mut u32),
     key: &mut u32,
@@ -195,7 +199,7 @@ fn record_serially(
     for piece in pieces {
         make_room(frame, key);
         let key = *key;
-        set_up(state, piece, bounds, depth, &mut Binned { frame, key })?;
+        set_up(state, &piece, bounds, depth, &mut Binned { frame, key })?;
     }
     Ok(())
 }
@@ -234,7 +238,7 @@ impl Sink for Binned<'_> {
 /// `draw` cut into pieces of whole primitives. Strips overlap by two vertices and start at
 /// an even triangle, so winding and provoking vertices are unchanged; fans and loops stay
 /// whole.
-fn pieces<'a>(draw: &DrawCall<'a>) -> Vec<DrawCall<'a>> {
+fn pieces<'a>(draw: &DrawCall<'a>) -> impl ExactSizeIterator<Item = DrawCall<'a>> + 'a {
     let n = draw.indices.len();
     let (step, overlap) = match draw.primitive {
         Primitive::Points => (PIECE, 0),
@@ -244,19 +248,20 @@ fn pieces<'a>(draw: &DrawCall<'a>) -> Vec<DrawCall<'a>> {
         Primitive::TriangleStrip => (PIECE, 2),
         Primitive::LineLoop | Primitive::TriangleFan => (n.max(1), 0),
     };
-    let mut out = Vec::new();
-    let mut start = 0;
-    loop {
-        let end = (start + step + overlap).min(n);
-        out.push(DrawCall {
-            indices: draw.indices.sub(start, end),
-            ..*draw
-        });
-        start += step;
-        if end >= n {
-            return out;
-        }
-    }
+    // Piece k starts at k·step, and there is a piece k > 0 while k·step + overlap < n
+    // (the piece before it stopped short of the end).
+    let count = if n <= step + overlap {
+        1
+    } else {
+        (n - overlap).div_ceil(step)
+    };
+    let draw = *draw;
+    (0..count).map(move |k| {
+        let start = k * step;
+        let mut piece = draw;
+        piece.indices = draw.indices.sub(start, (start + step + overlap).min(n));
+        piece
+    })
 }
 
 /// Transforms, clips and sets up one piece, passing its primitives to `emit` in order.
@@ -267,7 +272,36 @@ fn set_up(
     depth: Option<DepthFormat>,
     out: &mut impl Sink,
 ) -> Result<(), OutOfMemory> {
-    let vertices = vertex::run(state, draw)?;
+    let mut vertices = VERTICES.take();
+    let result = vertex::run_into(state, draw, &mut vertices)
+        .map(|()| set_up_vertices(state, draw, &vertices, bounds, depth, out));
+    // Storage grown for a very long fan or loop (drawn whole) is not kept.
+    if vertices.capacity() <= KEPT_VERTEX_STORAGE {
+        VERTICES.set(vertices);
+    }
+    result
+}
+
+/// The most vertex storage (floats and sparse keys) a thread keeps between pieces: a
+/// piece of [`PIECE`] triangles with every attribute takes under a quarter of it.
+const KEPT_VERTEX_STORAGE: usize = 1 << 20;
+
+thread_local! {
+    /// Each thread's vertex storage, reused from piece to piece (so from draw to draw):
+    /// three allocations and frees per draw were 7 % of the work outside rasterization in
+    /// a scene of many small draws (draws-10k).
+    static VERTICES: std::cell::Cell<vertex::Vertices> = std::cell::Cell::default();
+}
+
+/// [`set_up`] of the piece's primitives from its transformed `vertices`.
+fn set_up_vertices(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    vertices: &vertex::Vertices,
+    bounds: Rect,
+    depth: Option<DepthFormat>,
+    out: &mut impl Sink,
+) {
     let prim = draw.primitive;
     if prim == Primitive::Points {
         for k in 0..draw.indices.len() {
@@ -295,11 +329,10 @@ fn set_up(
             let slots = [vertices.slot(a), vertices.slot(b), vertices.slot(c)];
             // Most triangles outside the view end here, from three bytes.
             if !vertices.rejects(slots[0], slots[1], slots[2]) {
-                set_up_triangle(state, &vertices, slots, bounds, depth, out);
+                set_up_triangle(state, vertices, slots, bounds, depth, out);
             }
         });
     }
-    Ok(())
 }
 
 /// Clips (when a vertex may need it) and sets up the triangle of the vertices in `slots`,

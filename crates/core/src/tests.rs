@@ -1300,3 +1300,121 @@ fn corners_from_the_vertex_stage_and_from_set_up_give_the_same_pixels() {
     assert!(right_half > 100, "{right_half} pixels right of the middle");
     assert!(images[0].color() == images[1].color());
 }
+
+/// The pieces of a draw hold each of its primitives once and in order (strips keep their
+/// triangles' winding), for every kind of primitive and lengths around the pieces' ends.
+#[test]
+fn pieces_hold_every_primitive_once_in_order() {
+    use Primitive::*;
+    let list = |d: &DrawCall<'_>| {
+        let mut out = Vec::new();
+        if d.primitive == Points {
+            out.extend((0..d.indices.len()).map(|k| [d.indices.get(k), 0, 0]));
+        } else if d.primitive.is_line() {
+            d.primitive
+                .for_each_line(&d.indices, |a, b| out.push([a, b, 0]));
+        } else {
+            d.primitive
+                .for_each_triangle(&d.indices, |a, b, c| out.push([a, b, c]));
+        }
+        out
+    };
+    let ends = [0, 1, 2, 3, 4, 7];
+    let lengths = ends
+        .into_iter()
+        .chain([1, 2, 3, 4, 6, 10].into_iter().flat_map(|m| {
+            [m * PIECE - 2, m * PIECE - 1, m * PIECE, m * PIECE + 1]
+                .into_iter()
+                .chain([m * PIECE + 2, m * PIECE + 3, m * PIECE + 5])
+        }));
+    let prims = [
+        Points,
+        Lines,
+        LineStrip,
+        LineLoop,
+        Triangles,
+        TriangleStrip,
+        TriangleFan,
+    ];
+    for n in lengths {
+        for prim in prims {
+            let whole = positions_call(prim, &[], n);
+            let whole = DrawCall {
+                indices: Indices::Range { first: 7, count: n },
+                ..whole
+            };
+            let parts: Vec<_> = pieces(&whole).flat_map(|p| list(&p)).collect();
+            assert_eq!(parts, list(&whole), "{prim:?} of {n}");
+            let longest = pieces(&whole).map(|p| p.indices.len()).max();
+            let whole_kept = matches!(prim, LineLoop | TriangleFan);
+            assert!(
+                whole_kept || longest <= Some(3 * PIECE + 2),
+                "{prim:?} of {n}"
+            );
+        }
+    }
+}
+
+/// A long draw whose pieces fill the frame, set up on 2 or 3 threads (batches of pieces
+/// in parallel, or on the caller while a batch is behind), into a target held directly or
+/// behind a lock: the image is the one a single thread gives. The triangles are blended
+/// without a depth test, so a batch binned out of order, or rasterized twice, changes
+/// the image.
+#[test]
+fn long_draws_set_up_on_several_threads_keep_their_order() {
+    let (w, h) = (64, 48);
+    let mut rng = Lcg(23);
+    let n = 5 * PIECE + 77;
+    let mut pos = Vec::with_capacity(n * 9);
+    for _ in 0..n {
+        let (x, y) = (rng.next() * 70.0 - 3.0, rng.next() * 54.0 - 3.0);
+        for _ in 0..3 {
+            pos.extend([x + rng.next() * 9.0, y + rng.next() * 9.0, 0.0]);
+        }
+    }
+    let col: Vec<f32> = (0..n * 12).map(|_| rng.next()).collect();
+    let (pb, cb) = (bytes(&pos), bytes(&col));
+    let long = colored_call(Primitive::Triangles, &pb, &cb, 3 * n);
+    // A few primitives already recorded, so that the draw starts in a frame with some.
+    let first = colored_call(Primitive::Triangles, &pb, &cb, 300);
+    use crate::state::{Blend, BlendFactor};
+    let mut state = pixel_state(w, h);
+    state.blend = Some(Blend::func(
+        BlendFactor::SrcAlpha,
+        BlendFactor::OneMinusSrcAlpha,
+    ));
+    let image = |threads: usize, behind: bool| {
+        let mut frame = Frame::for_target(&target(w as u32, h as u32));
+        let shared = Arc::new(Mutex::new(target(w as u32, h as u32)));
+        let mut direct = target(w as u32, h as u32);
+        for call in [&first, &long] {
+            let to = if behind {
+                Destination::Behind(shared.clone())
+            } else {
+                Destination::Now(&mut direct)
+            };
+            record_pieces(&state, call, &mut frame, Some(to), threads).unwrap();
+        }
+        if behind {
+            // The batch behind locks the target: waited for before the lock is taken.
+            frame.wait();
+            frame.flush_into(&mut shared.lock().unwrap());
+            let t = shared.lock().unwrap();
+            t.color().to_vec()
+        } else {
+            frame.flush_into(&mut direct);
+            direct.color().to_vec()
+        }
+    };
+    let want = image(1, false);
+    let blank = want.iter().filter(|&&w| w == 0).count();
+    assert!(blank < want.len() / 4, "the draw covers the target");
+    for threads in [2, 3] {
+        for behind in [false, true] {
+            assert!(
+                image(threads, behind) == want,
+                "{threads} threads, behind {behind}"
+            );
+        }
+    }
+}

@@ -553,14 +553,26 @@ pub struct Vertices {
     /// otherwise empty (see [`Vertices::corners`]).
     windows: Vec<Window>,
     layout: Layout,
-    map: VertexMap,
+    /// Where vertex number `i` is: in slot `keys[k] == i` when `sparse` (the sorted
+    /// distinct numbers of a sparse index list), else in slot `i − base` (every number of
+    /// the index range).
+    sparse: bool,
+    base: usize,
+    keys: Vec<usize>,
 }
 
-enum VertexMap {
-    /// Vertex `i − base` for every number in the index range.
-    Dense { base: usize },
-    /// Vertex `k` for `keys[k]`: the sorted distinct numbers of a sparse index list.
-    Sparse { keys: Vec<usize> },
+impl Default for Vertices {
+    fn default() -> Vertices {
+        Vertices {
+            data: Vec::new(),
+            codes: Vec::new(),
+            windows: Vec::new(),
+            layout: Layout::full(0),
+            sparse: false,
+            base: 0,
+            keys: Vec::new(),
+        }
+    }
 }
 
 impl Vertices {
@@ -573,9 +585,10 @@ impl Vertices {
     /// Where vertex number `i` (one the draw uses) is kept, for [`Vertices::at`].
     #[inline]
     pub fn slot(&self, i: usize) -> usize {
-        match &self.map {
-            VertexMap::Dense { base } => i - base,
-            VertexMap::Sparse { keys } => keys.binary_search(&i).expect("vertex of this draw"),
+        if self.sparse {
+            self.keys.binary_search(&i).expect("vertex of this draw")
+        } else {
+            i - self.base
         }
     }
 
@@ -612,6 +625,11 @@ impl Vertices {
         self.layout.view(floats)
     }
 
+    /// The floats and keys of storage held, used or not.
+    pub fn capacity(&self) -> usize {
+        self.data.capacity() + self.keys.capacity()
+    }
+
     /// How many vertices were transformed.
     #[cfg(test)]
     fn len(&self) -> usize {
@@ -624,19 +642,36 @@ impl Vertices {
 /// structure); a sparser one only at its distinct indices. The counts come from the
 /// caller, so allocations are fallible rather than aborting.
 pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMemory> {
+    let mut out = Vertices::default();
+    run_into(state, draw, &mut out)?;
+    Ok(out)
+}
+
+/// [`run`] into `out`, whose storage is reused: a draw of six vertices spent some 600
+/// instructions allocating and freeing its vertices, against 1 500 transforming them.
+pub fn run_into(
+    state: &RenderState,
+    draw: &DrawCall<'_>,
+    out: &mut Vertices,
+) -> Result<(), OutOfMemory> {
     let stage = transform::Stage::new(state, draw);
     let layout = stage.layout;
-    let mut data = Vec::new();
-    let mut codes = Vec::new();
-    let mut windows = Vec::new();
+    out.data.clear();
+    out.codes.clear();
+    out.windows.clear();
+    out.keys.clear();
+    out.layout = layout;
+    out.sparse = false;
+    let Vertices {
+        data,
+        codes,
+        windows,
+        keys,
+        ..
+    } = out;
     let Some((lo, hi)) = draw.indices.range() else {
-        return Ok(Vertices {
-            data,
-            codes,
-            windows,
-            layout,
-            map: VertexMap::Dense { base: 0 },
-        });
+        out.base = 0;
+        return Ok(());
     };
     // The vertices' floats and the padding after the last.
     let mut reserve = |count: usize| {
@@ -654,36 +689,25 @@ pub fn run(state: &RenderState, draw: &DrawCall<'_>) -> Result<Vertices, OutOfMe
     let n = draw.indices.len();
     if matches!(draw.indices, Indices::Range { .. }) || span <= n.saturating_mul(2) {
         reserve(span)?;
-        fill(&mut data, &mut codes, &mut windows, &stage, lo..=hi, span);
-        return Ok(Vertices {
-            data,
-            codes,
-            windows,
-            layout,
-            map: VertexMap::Dense { base: lo },
-        });
+        fill(data, codes, windows, &stage, lo..=hi, span);
+        out.base = lo;
+        return Ok(());
     }
-    let mut keys = Vec::new();
     keys.try_reserve_exact(n).map_err(|_| OutOfMemory)?;
     keys.extend((0..n).map(|k| draw.indices.get(k)));
     keys.sort_unstable();
     keys.dedup();
     reserve(keys.len())?;
     fill(
-        &mut data,
-        &mut codes,
-        &mut windows,
+        data,
+        codes,
+        windows,
         &stage,
         keys.iter().copied(),
         keys.len(),
     );
-    Ok(Vertices {
-        data,
-        codes,
-        windows,
-        layout,
-        map: VertexMap::Sparse { keys },
-    })
+    out.sparse = true;
+    Ok(())
 }
 
 /// Appends the `count` vertices `numbers` yields to `data` (which has the room), then the

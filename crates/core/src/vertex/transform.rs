@@ -104,7 +104,19 @@ pub struct Deferred {
 
 impl<'s, 'd> Stage<'s, 'd> {
     pub fn new(state: &'s RenderState, draw: &'d DrawCall<'d>) -> Self {
-        let normal = normal_matrix(&state.modelview);
+        // The inverse of the modelview only where normals may be read (lighting, or the
+        // texgen modes of [`Stage::need_normal`] on some unit): a draw of many without
+        // them paid for it every time.
+        let reads_normals = state.lighting.is_some()
+            || state
+                .texgen
+                .iter()
+                .any(|g| matches!(g, Some(TexGen::NormalMap | TexGen::ReflectionMap)));
+        let normal = if reads_normals {
+            normal_matrix(&state.modelview)
+        } else {
+            Mat3::IDENTITY
+        };
         let lighting = state.lighting.as_ref().map(Prepared::new);
         let two_side = state
             .lighting
