@@ -859,7 +859,7 @@ fn st_lanes(ts: &UnitCoords, i0: usize) -> (Lane<f32>, Lane<f32>, Lane<f32>) {
 /// `wrap` and `n` are the same for every lane, so each arm's loop vectorizes). |i| ≤ 2²¹.
 #[inline(always)]
 fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
-    if n & (n - 1) == 0 || wrap == Wrap::ClampToEdge {
+    if wraps_by_mask(wrap, n) {
         wrap_pot(wrap, i, n);
     } else {
         wrap_npot(wrap, i, None, n);
@@ -869,7 +869,7 @@ fn wrap_lanes(wrap: Wrap, i: &mut Lane<i32>, n: i32) {
 /// [`wrap_lanes`] of `i` and of its right or lower neighbours `i + 1`, into `next`.
 #[inline(always)]
 fn wrap_pair_lanes(wrap: Wrap, i: &mut Lane<i32>, next: &mut Lane<i32>, n: i32) {
-    if n & (n - 1) == 0 || wrap == Wrap::ClampToEdge {
+    if wraps_by_mask(wrap, n) {
         for j in 0..LANES {
             next[j] = i[j] + 1;
         }
@@ -878,6 +878,13 @@ fn wrap_pair_lanes(wrap: Wrap, i: &mut Lane<i32>, next: &mut Lane<i32>, n: i32) 
     } else {
         wrap_npot(wrap, i, Some(next), n);
     }
+}
+
+/// Whether [`wrap_pot`] wraps size `n` (a power of two, or any size under CLAMP_TO_EDGE);
+/// otherwise [`wrap_npot`] does.
+#[inline(always)]
+fn wraps_by_mask(wrap: Wrap, n: i32) -> bool {
+    n & (n - 1) == 0 || wrap == Wrap::ClampToEdge
 }
 
 /// [`wrap_lanes`] for `n` a power of two, or under CLAMP_TO_EDGE (which clamps alike at
@@ -916,14 +923,14 @@ fn wrap_npot(wrap: Wrap, i: &mut Lane<i32>, next: Option<&mut Lane<i32>>, n: i32
         m[j] = i[j] - q * p;
     }
     // Under REPEAT every remainder is below n and the reflection changes nothing.
+    let reflect = |m: i32| if m >= n { p - 1 - m } else { m };
     if let Some(next) = next {
         for j in 0..LANES {
-            let m1 = if m[j] + 1 == p { 0 } else { m[j] + 1 };
-            next[j] = if m1 >= n { p - 1 - m1 } else { m1 };
+            next[j] = reflect(if m[j] + 1 == p { 0 } else { m[j] + 1 });
         }
     }
     for j in 0..LANES {
-        i[j] = if m[j] >= n { p - 1 - m[j] } else { m[j] };
+        i[j] = reflect(m[j]);
     }
 }
 

@@ -69,8 +69,9 @@ impl Wrap {
     ///
     /// The remainder modulo the period p (n, or 2n mirrored) comes from an f64 quotient
     /// rather than an integer division, which does not vectorize (the 8-wide routes, whose
-    /// coordinates stay within ±2²¹, use an f32 form of the same quotient). The quotient is exact for every i32 `i`: (i + ½)/p = (2i + 1)/(2p) lies at
-    /// least 1/(2p) from every integer, and the computed product (i + ½)·fl(1/p) is within
+    /// coordinates stay within ±2²¹, use an f32 form of the same quotient). The quotient
+    /// is exact for every i32 `i`: (i + ½)/p = (2i + 1)/(2p) lies at least 1/(2p) from
+    /// every integer, and the computed product (i + ½)·fl(1/p) is within
     /// |i + ½|/p · 2⁻⁵² ≤ 2⁻²¹/p of it, so its floor is ⌊i/p⌋. The rest is exact in f64.
     #[inline(always)]
     pub fn index_npot(self, i: i32, n: i32) -> i32 {
