@@ -447,7 +447,9 @@ pub struct FragmentKey {
 }
 
 impl FragmentKey {
-    pub fn new(state: &RenderState, format: TargetFormat) -> FragmentKey {
+    /// The key of a draw with `state` into a target of `format`; `flat` when each of its
+    /// primitives takes one color ([`crate::flat_colors`]).
+    pub fn new(state: &RenderState, format: TargetFormat, flat: bool) -> FragmentKey {
         let depth = state.depth_test.zip(format.depth);
         // The reference clamped to the 8-bit buffer once here, not per fragment.
         let stencil = state
@@ -479,7 +481,7 @@ impl FragmentKey {
             blend,
             logic_op,
             dither,
-            flat: state.shade_model == super::state::ShadeModel::Flat,
+            flat,
             perspective: state.perspective,
             tex: TexStage::new(state).map(Arc::new),
             route: Route::General,

@@ -122,7 +122,7 @@ fn record_pieces(
     if !frame.planes_mut().is_empty() {
         return record_samples(state, draw, frame);
     }
-    let fragment = fragment::FragmentKey::new(state, frame.format());
+    let fragment = fragment::FragmentKey::new(state, frame.format(), flat_colors(state, draw));
     let mut key = frame.key(fragment.clone());
     // A flush forgets the frame's keys: the piece after it registers this one again.
     let mut make_room = |frame: &mut Frame, key: &mut u32| {
@@ -293,6 +293,15 @@ thread_local! {
     static VERTICES: std::cell::Cell<vertex::Vertices> = std::cell::Cell::default();
 }
 
+/// Whether each primitive of `draw` takes one color, set up and shaded without color planes:
+/// under flat shading the provoking vertex's, and when every vertex has the same color (no
+/// lighting, no color array) that color, which interpolation would give back only up to
+/// rounding. A draw of one color is common (text, sprites, untextured UI, wireframes).
+pub fn flat_colors(state: &RenderState, draw: &DrawCall<'_>) -> bool {
+    state.shade_model == ShadeModel::Flat
+        || (state.lighting.is_none() && matches!(draw.color, AttribSource::Constant(_)))
+}
+
 /// [`set_up`] of the piece's primitives from its transformed `vertices`.
 fn set_up_vertices(
     state: &RenderState,
@@ -303,6 +312,7 @@ fn set_up_vertices(
     out: &mut impl Sink,
 ) {
     let prim = draw.primitive;
+    let flat = flat_colors(state, draw);
     if prim == Primitive::Points {
         for k in 0..draw.indices.len() {
             let v = vertices.get(draw.indices.get(k));
@@ -316,7 +326,7 @@ fn set_up_vertices(
         prim.for_each_line(&draw.indices, |a, b| {
             let (va, vb) = (vertices.get(a), vertices.get(b));
             clip::line(va, vb, |ca, cb| {
-                if let Some(l) = raster::line::setup(state, ca, cb, vb, bounds) {
+                if let Some(l) = raster::line::setup(state, ca, cb, flat.then_some(vb), bounds) {
                     out.push(raster::Prim::Line(l));
                 }
             });
@@ -329,20 +339,22 @@ fn set_up_vertices(
             let slots = [vertices.slot(a), vertices.slot(b), vertices.slot(c)];
             // Most triangles outside the view end here, from three bytes.
             if !vertices.rejects(slots[0], slots[1], slots[2]) {
-                set_up_triangle(state, vertices, slots, bounds, depth, out);
+                set_up_triangle(state, vertices, slots, flat, bounds, depth, out);
             }
         });
     }
 }
 
 /// Clips (when a vertex may need it) and sets up the triangle of the vertices in `slots`,
-/// which `rejects` kept. Out of line, so the triangle loop, where most triangles of a
-/// scene outside the view end, does not pay for this function's stack frame.
+/// which `rejects` kept, with its last vertex's color when `flat`. Out of line, so the
+/// triangle loop, where most triangles of a scene outside the view end, does not pay for
+/// this function's stack frame.
 #[inline(never)]
 fn set_up_triangle(
     state: &RenderState,
     vertices: &vertex::Vertices,
     slots: [usize; 3],
+    flat: bool,
     bounds: Rect,
     depth: Option<DepthFormat>,
     out: &mut impl Sink,
@@ -355,14 +367,22 @@ fn set_up_triangle(
     // Inside the clip volume (most triangles), the clipper would pass it on as it is.
     if !vertices.may_clip(slots[0], slots[1], slots[2]) {
         let corners = vertices.corners(slots);
-        setup::triangle(state, [a, b, c], corners, c, bounds, depth, out);
+        setup::triangle(
+            state,
+            [a, b, c],
+            corners,
+            flat.then_some(c),
+            bounds,
+            depth,
+            out,
+        );
         return;
     }
     // A clipped polygon is convex: fan it out from its first vertex.
     clip::triangle(a, b, c, |poly: &[vertex::VertexRef<'_>]| {
         for i in 1..poly.len() - 1 {
             let tri = [poly[0], poly[i], poly[i + 1]];
-            setup::triangle(state, tri, None, c, bounds, depth, out);
+            setup::triangle(state, tri, None, flat.then_some(c), bounds, depth, out);
         }
     });
 }

@@ -2,7 +2,7 @@
 //! subpixels by [`ViewportTransform`]), integer edge functions with a top-left fill rule,
 //! facing and culling, and the planes of the attributes.
 
-use super::state::{CullFace, RenderState, ShadeModel, Winding};
+use super::state::{CullFace, RenderState, Winding};
 use super::target::{DepthFormat, Rect};
 use super::vertex::{VertexRef, ViewportTransform, Window};
 use super::{SUBPIXEL_BITS, TEXTURE_UNITS};
@@ -138,7 +138,7 @@ pub struct Planes4 {
 }
 
 impl Planes4 {
-    const ZERO: Planes4 = Planes4 {
+    pub const ZERO: Planes4 = Planes4 {
         dx: [0.0; 4],
         dy: [0.0; 4],
         c: [0.0; 4],
@@ -404,7 +404,8 @@ impl TriangleSlot for Option<Triangle> {
 /// target with `depth` bits into a slot of `out`, or returns `false` (and takes no slot)
 /// when it is culled, has no area, or cannot touch `bounds`. `corners` are the vertices'
 /// window coordinates when the vertex stage has them, else they are worked out here
-/// (both by [`ViewportTransform::lanes`]). `provoking` supplies the flat-shaded color.
+/// (both by [`ViewportTransform::lanes`]). `flat` is the vertex whose color the whole
+/// triangle takes ([`crate::flat_colors`]), `None` when colors are interpolated.
 /// Compiled also for AVX2 and SSE4.1 and chosen at run time, as the vertex and span loops
 /// are: the same f64 operations, so the same results.
 #[cfg_attr(
@@ -415,7 +416,7 @@ pub fn triangle<'v, 's>(
     state: &RenderState,
     v: [VertexRef<'v>; 3],
     corners: Option<[Window; 3]>,
-    provoking: VertexRef<'v>,
+    flat: Option<VertexRef<'v>>,
     bounds: Rect,
     depth: Option<DepthFormat>,
     out: &'s mut dyn TriangleSlot,
@@ -515,7 +516,7 @@ pub fn triangle<'v, 's>(
     shading.origin = (bbox.x0, bbox.y0);
     shading.z = z_plane;
     shading.inv_w = through(inv_w);
-    shading.flat = (state.shade_model == ShadeModel::Flat).then(|| color(provoking).to_array());
+    shading.flat = flat.map(|v| color(v).to_array());
     shading.color_w = if shading.flat.is_some() {
         Planes4::ZERO
     } else {

@@ -1103,16 +1103,12 @@ fn four_quarter_viewports_render_what_the_whole_viewport_does() {
     assert_eq!(whole.depth(), quarters.depth());
 }
 
-#[test]
-fn perspective_hints_divide_colors_exactly() {
-    use crate::state::Quality;
-    let mut rng = Lcg(11);
+/// `n` triangles receding into the distance (a wall receding to the right: w changes along
+/// each row), the case perspective correction is for.
+fn receding_triangles(rng: &mut Lcg, n: usize) -> Vec<f32> {
     let mut pos = Vec::new();
-    let mut col = Vec::new();
-    // Triangles receding into the distance: the case perspective correction is for.
-    for _ in 0..30 {
+    for _ in 0..n {
         let x = rng.next() * 6.0 - 3.0;
-        // A wall receding to the right: w changes along each row.
         pos.extend([
             -3.0,
             x - 1.0,
@@ -1124,10 +1120,18 @@ fn perspective_hints_divide_colors_exactly() {
             x * 5.0,
             -40.0,
         ]);
-        for _ in 0..3 {
-            col.extend([rng.next(), rng.next(), rng.next(), 1.0]);
-        }
     }
+    pos
+}
+
+#[test]
+fn perspective_hints_divide_colors_exactly() {
+    use crate::state::Quality;
+    let mut rng = Lcg(11);
+    let pos = receding_triangles(&mut rng, 30);
+    let col: Vec<f32> = (0..90)
+        .flat_map(|_| [rng.next(), rng.next(), rng.next(), 1.0])
+        .collect();
     let pb = bytes(&pos);
     let cb = bytes(&col);
     let call = colored_call(Primitive::Triangles, &pb, &cb, 90);
@@ -1415,6 +1419,29 @@ fn long_draws_set_up_on_several_threads_keep_their_order() {
                 image(threads, behind) == want,
                 "{threads} threads, behind {behind}"
             );
+        }
+    }
+}
+
+#[test]
+fn a_draw_of_one_color_takes_it_exactly_on_every_pixel() {
+    // Receding triangles and lines (w changes along every row) in colors whose channels
+    // fall on a rounding boundary of the 8-bit encoding (0.5 · 255 = 127.5): interpolated,
+    // c·(1/w) divided by 1/w lands an ulp below c on some pixels and encodes a step lower.
+    let pos = receding_triangles(&mut Lcg(5), 20);
+    let mut s = RenderState::new(96, 64);
+    s.projection = Mat4::perspective_rh_gl(1.0, 1.5, 0.5, 50.0);
+    for color in [[0.5, 0.5, 0.5, 0.5], [0.25, 0.75, 0.5, 1.0]] {
+        let expected = ColorFormat::Rgba8888.encode(color).to_le_bytes();
+        for prim in [Primitive::Triangles, Primitive::LineStrip] {
+            let mut t = target(96, 64);
+            draw(&s, &mut t, &pos, color, prim);
+            let drawn = (0..64)
+                .flat_map(|y| row(&t, y))
+                .filter(|&p| p != [0; 4])
+                .collect::<Vec<_>>();
+            assert!(drawn.len() > 100, "{prim:?}: {} pixels", drawn.len());
+            assert!(drawn.iter().all(|&p| p == expected), "{prim:?} {color:?}");
         }
     }
 }

@@ -1815,6 +1815,7 @@ mod tests {
                         depth: None,
                         stencil_bits: 0,
                     },
+                    false,
                 );
                 let span = Span {
                     y,

@@ -14,7 +14,7 @@
 //! segment, perspective-correctly for colors and linearly for depth.
 
 use super::super::setup::{Coverage, Plane, Planes4, Shading, Shape};
-use super::super::state::{RenderState, ShadeModel};
+use super::super::state::RenderState;
 use super::super::target::Rect;
 use super::super::vertex::VertexRef;
 use super::{window, Span, MAX_LINE_WIDTH};
@@ -56,13 +56,14 @@ fn plane_along(a: (f64, f64), d: (f64, f64), len2: f64, va: f64, vb: f64) -> Pla
     }
 }
 
-/// Sets up clipped segment (a, b) for rasterization inside `bounds`. `provoking` supplies
-/// the flat-shaded color.
+/// Sets up clipped segment (a, b) for rasterization inside `bounds`. `flat` is the vertex
+/// whose color the whole segment takes ([`crate::flat_colors`]), `None` when colors are
+/// interpolated.
 pub fn setup(
     state: &RenderState,
     a: VertexRef<'_>,
     b: VertexRef<'_>,
-    provoking: VertexRef<'_>,
+    flat: Option<VertexRef<'_>>,
     bounds: Rect,
 ) -> Option<Line> {
     let (ax, ay, az, aw) = window(state, a.pos())?;
@@ -73,16 +74,20 @@ pub fn setup(
         return None;
     }
     let along = |va: f64, vb: f64| plane_along((ax, ay), d, len2, va, vb);
-    let flat = (state.shade_model == ShadeModel::Flat).then(|| provoking.color().to_array());
+    let flat = flat.map(|v| v.color().to_array());
     let (tex, fog) =
         crate::setup::attribute_planes(state, &[a, b], &[aw, bw], &|f| along(f(0), f(1)));
     let shading = |coverage| Shading {
         origin: (0, 0),
         z: along(az, bz),
         inv_w: along(aw, bw),
-        color_w: Planes4::from_planes(std::array::from_fn(|c| {
-            along(a.color()[c] as f64 * aw, b.color()[c] as f64 * bw)
-        })),
+        color_w: if flat.is_some() {
+            Planes4::ZERO
+        } else {
+            Planes4::from_planes(std::array::from_fn(|c| {
+                along(a.color()[c] as f64 * aw, b.color()[c] as f64 * bw)
+            }))
+        },
         flat,
         coverage,
         tex: tex.clone(),

@@ -214,7 +214,7 @@ mod tests {
         let f = p.map(|p| layout.pack(&ClipVertex::new(p, Vec4::ONE)));
         let v = f.each_ref().map(|f| layout.view(f));
         let mut kept = None;
-        setup::triangle(state, v, None, v[2], bounds, None, &mut kept);
+        setup::triangle(state, v, None, None, bounds, None, &mut kept);
         kept
     }
 
