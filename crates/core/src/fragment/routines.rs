@@ -1170,9 +1170,9 @@ fn lambda_lanes(ts: &UnitCoords, s: &Lane<f32>, t: &Lane<f32>, r: &Lane<f32>) ->
 }
 
 /// A filter pair that depends on λ (`Sampler::sample_255`, scaled to 0 ..= 1) over a group
-/// whose lanes all magnify, or all minify from the same level (or pair of levels); `false`
-/// otherwise. `TRI`: the pair is LINEAR_MIPMAP_LINEAR and LINEAR (the code for the other
-/// pairs left out).
+/// whose lanes all magnify, or all minify from the same level (or pair of levels), or for
+/// `TRI` partly magnify; `false` otherwise. `TRI`: the pair is LINEAR_MIPMAP_LINEAR and
+/// LINEAR (the code for the other pairs left out).
 #[inline(always)]
 fn mipmap_lanes<const TRI: bool>(
     sm: &Sampler,
@@ -1193,7 +1193,18 @@ fn mipmap_lanes<const TRI: bool>(
         return sample_level(sm, 0, linear, INV_255, s, t, out);
     }
     if !every(&lambda, |l| l > sm.c) {
-        return false;
+        // A group across the edge of magnification (a ring in a tunnel, a line across a
+        // floor). Under LINEAR magnification and c = 0 a magnified lane samples level 0
+        // bilinearly, which is the trilinear blend at λ = 0: level 0 plus a weight of 0
+        // times the step to level 1, bit for bit (x + (y − x)·0 is x for texel values).
+        if !TRI || sm.c != 0.0 {
+            return false;
+        }
+        for l in lambda.iter_mut() {
+            if l.is_nan() || *l <= 0.0 {
+                *l = 0.0;
+            }
+        }
     }
     let q = sm.levels.len() - 1;
     let qf = q as f32;
