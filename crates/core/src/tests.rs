@@ -1103,9 +1103,12 @@ fn four_quarter_viewports_render_what_the_whole_viewport_does() {
     assert_eq!(whole.depth(), quarters.depth());
 }
 
-/// `n` triangles receding into the distance (a wall receding to the right: w changes along
-/// each row), the case perspective correction is for.
-fn receding_triangles(rng: &mut Lcg, n: usize) -> Vec<f32> {
+/// A 96 × 64 perspective state and `n` triangles receding into the distance in it (a wall
+/// receding to the right: w changes along each row), the case perspective correction is
+/// for.
+fn receding_triangles(rng: &mut Lcg, n: usize) -> (RenderState, Vec<f32>) {
+    let mut s = RenderState::new(96, 64);
+    s.projection = Mat4::perspective_rh_gl(1.0, 1.5, 0.5, 50.0);
     let mut pos = Vec::new();
     for _ in 0..n {
         let x = rng.next() * 6.0 - 3.0;
@@ -1121,22 +1124,20 @@ fn receding_triangles(rng: &mut Lcg, n: usize) -> Vec<f32> {
             -40.0,
         ]);
     }
-    pos
+    (s, pos)
 }
 
 #[test]
 fn perspective_hints_divide_colors_exactly() {
     use crate::state::Quality;
     let mut rng = Lcg(11);
-    let pos = receding_triangles(&mut rng, 30);
+    let (mut s, pos) = receding_triangles(&mut rng, 30);
     let col: Vec<f32> = (0..90)
         .flat_map(|_| [rng.next(), rng.next(), rng.next(), 1.0])
         .collect();
     let pb = bytes(&pos);
     let cb = bytes(&col);
     let call = colored_call(Primitive::Triangles, &pb, &cb, 90);
-    let mut s = RenderState::new(96, 64);
-    s.projection = Mat4::perspective_rh_gl(1.0, 1.5, 0.5, 50.0);
     let mut slow = target(96, 64);
     reference::render(&s, &call, &mut slow);
     let mut errors = Vec::new();
@@ -1428,9 +1429,7 @@ fn a_draw_of_one_color_takes_it_exactly_on_every_pixel() {
     // Receding triangles and lines (w changes along every row) in colors whose channels
     // fall on a rounding boundary of the 8-bit encoding (0.5 · 255 = 127.5): interpolated,
     // c·(1/w) divided by 1/w lands an ulp below c on some pixels and encodes a step lower.
-    let pos = receding_triangles(&mut Lcg(5), 20);
-    let mut s = RenderState::new(96, 64);
-    s.projection = Mat4::perspective_rh_gl(1.0, 1.5, 0.5, 50.0);
+    let (s, pos) = receding_triangles(&mut Lcg(5), 20);
     for color in [[0.5, 0.5, 0.5, 0.5], [0.25, 0.75, 0.5, 1.0]] {
         let expected = ColorFormat::Rgba8888.encode(color).to_le_bytes();
         for prim in [Primitive::Triangles, Primitive::LineStrip] {
