@@ -3,8 +3,8 @@
  * each enabled unit's crop rectangle. NEAREST at 1:1 and 2:1 is pixel-exact (texel centers
  * fall inside pixels), as are crop sub-rectangles, a flipped crop (negative height), the
  * window depth z mapped through the depth range, the current color without a texture, the
- * texture matrix and viewport being ignored, two units with their own crops, and every
- * entry point. Errors: width or height <= 0.
+ * texture matrix and viewport being ignored (and applying again to the draws after), two
+ * units with their own crops, and every entry point. Errors: width or height <= 0.
  */
 #include "common.h"
 
@@ -196,6 +196,45 @@ static void depth_and_ignored_state(void)
     ct_save("depth");
 }
 
+/* A draw after glDrawTexOES takes the state the rectangle ignored: the texture matrix and
+ * the viewport apply to it again. */
+static void draws_after_keep_the_ignored_state(void)
+{
+    static const GLfloat pos[] = {-1, -1, 1, -1, 1, 1, -1, 1};
+    static const GLfloat tc[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    const GLubyte *t;
+    int i, j;
+    clear();
+    crop(0, 0, T, T);
+    glMatrixMode(GL_TEXTURE);
+    glTranslatef(2.0f / T, 0, 0);
+    glMatrixMode(GL_MODELVIEW);
+    glViewport(W / 2, H / 2, W / 2, H / 2);
+    glDrawTexiOES(0, 0, 0, T, T);
+    t = texel(3, 3);
+    CHECK_PIXEL(3, 3, t[0], t[1], t[2], t[3], 0);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, pos);
+    glTexCoordPointer(2, GL_FLOAT, 0, tc);
+    glDrawArrays(GL_TRIANGLE_FAN, 0, 4);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    /* Four pixels a texel in the upper right quarter, shifted by two texels (REPEAT). */
+    for (j = 0; j < T; ++j)
+        for (i = 0; i < T; ++i) {
+            t = texel((i + 2) % T, j);
+            CHECK_PIXEL(W / 2 + 4 * i + 2, H / 2 + 4 * j + 2, t[0], t[1], t[2], t[3], 0);
+        }
+    CHECK_PIXEL(W / 2 - 1, H / 2 - 1, 0, 0, 0, 0, 0);
+    glViewport(0, 0, W, H);
+    glMatrixMode(GL_TEXTURE);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    CHECK_GL(GL_NO_ERROR);
+    ct_save("draw_after");
+}
+
 static void modulate_and_two_units(void)
 {
     static const GLubyte gray[4] = {128, 128, 128, 128};
@@ -295,6 +334,7 @@ int main(void)
     one_to_one_and_two_to_one();
     crop_sub_rectangles();
     depth_and_ignored_state();
+    draws_after_keep_the_ignored_state();
     modulate_and_two_units();
     glBindTexture(GL_TEXTURE_2D, 0);
     make_texture();

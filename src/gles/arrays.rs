@@ -1,7 +1,9 @@
 //! Client vertex arrays, the current vertex values, and the draw calls that read them.
 #![forbid(unsafe_code)]
 
-use gles_cm_core::{AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive};
+use gles_cm_core::{
+    AttribArray, AttribSource, ComponentType, DrawCall, Indices, Primitive, RenderState,
+};
 
 use super::buffer::lock_objects;
 use super::context::{Context, SharedObjects, MAX_TEXTURE_UNITS, MAX_VERTEX_UNITS};
@@ -245,7 +247,17 @@ impl Context {
         // Make room first: the frame must not flush while the share group is locked below.
         self.with_frame(|_, _| ());
         // Before the share group is locked: the state snapshots textures, which locks it.
-        let state = self.render_state();
+        self.with_render_state(|ctx, state| ctx.record_draw(state, primitive, indices, hi));
+    }
+
+    /// Records a draw of the current arrays, whose highest index is `hi`, with `state`.
+    fn record_draw(
+        &mut self,
+        state: &RenderState,
+        primitive: Primitive,
+        indices: Indices<'_>,
+        hi: usize,
+    ) {
         let shared = self.shared.clone();
         let objects = lock_objects(&shared);
         let position = match array_view(&objects, &self.arrays.vertex, hi, false) {
@@ -308,7 +320,7 @@ impl Context {
         call.matrix_index = matrix_index;
         call.weight = weight;
         let recorded =
-            self.with_frame(|frame, to| gles_cm_core::record_into(&state, &call, frame, to));
+            self.with_frame(|frame, to| gles_cm_core::record_into(state, &call, frame, to));
         if let Some(Err(_)) = recorded {
             self.set_error(GL_OUT_OF_MEMORY);
         }

@@ -1,5 +1,5 @@
 //! A GL ES 1.1 context: the state machine behind the `gl*` entry points. State is kept in
-//! the specification's float form; [`Context::render_state`] turns it into the core's
+//! the specification's float form; [`Context::with_render_state`] turns it into the core's
 //! [`RenderState`] for each draw.
 #![forbid(unsafe_code)]
 
@@ -244,6 +244,9 @@ pub struct Context {
     pub(super) frame: Option<Recording>,
     /// Framebuffer objects, bindings and the bound one's assembled target.
     pub(super) fbo: super::fbo::FramebufferState,
+    /// The core's state of the last draw, kept to be filled in place by the next one (see
+    /// [`Context::with_render_state`]); `None` while a draw holds it.
+    render_state: Option<Box<RenderState>>,
 }
 
 impl Context {
@@ -309,6 +312,7 @@ impl Context {
             buffers: Default::default(),
             frame: None,
             fbo: Default::default(),
+            render_state: None,
         }
     }
 
@@ -413,37 +417,103 @@ impl Context {
         std::mem::replace(&mut self.error, GL_NO_ERROR)
     }
 
-    /// The core's view of the current state.
-    pub fn render_state(&self) -> RenderState {
+    /// Runs `f` with the core's view of the current state ([`Context::take_render_state`]).
+    pub fn with_render_state<R>(&mut self, f: impl FnOnce(&mut Self, &RenderState) -> R) -> R {
+        let rs = self.take_render_state();
+        let result = f(self, &rs);
+        self.put_back_render_state(rs);
+        result
+    }
+
+    /// The core's view of the current state, to be handed back with
+    /// [`Context::put_back_render_state`]. It is filled in place of the last draw's, so a
+    /// draw neither builds a default state nor copies one out, and the lists (lights, clip
+    /// planes, palette) keep their allocations.
+    pub fn take_render_state(&mut self) -> Box<RenderState> {
+        let mut rs = self
+            .render_state
+            .take()
+            .unwrap_or_else(|| Box::new(RenderState::new(0, 0)));
+        self.fill_render_state(&mut rs);
+        rs
+    }
+
+    /// Keeps `rs` for the next draw (whatever a caller changed in it is written over then).
+    pub fn put_back_render_state(&mut self, rs: Box<RenderState>) {
+        self.render_state = Some(rs);
+    }
+
+    /// Writes every field of `rs` from the current state.
+    fn fill_render_state(&self, rs: &mut RenderState) {
+        // Every field is written below or by the three parts: a field added to RenderState
+        // must be named here, so none keeps a value from the last draw.
+        let RenderState {
+            modelview: _,
+            projection: _,
+            viewport: _,
+            depth_range: _,
+            scissor: _,
+            cull: _,
+            front_face: _,
+            shade_model: _,
+            depth_test: _,
+            depth_write: _,
+            color_mask: _,
+            polygon_offset: _,
+            alpha_test: _,
+            stencil_test: _,
+            stencil_writemask: _,
+            blend: _,
+            logic_op: _,
+            dither: _,
+            line_width: _,
+            line_smooth: _,
+            point_size: _,
+            point_smooth: _,
+            perspective: _,
+            line_quality: _,
+            point_quality: _,
+            lighting: _,
+            normalize: _,
+            rescale_normal: _,
+            clip_planes: _,
+            texture_matrices: _,
+            texgen: _,
+            point_params: _,
+            matrix_palette: _,
+            textures: _,
+            fog: _,
+            point_sprite: _,
+            multisample: _,
+            sample: _,
+        } = rs;
         let e = &self.enables;
         let pl = &self.points_lines;
-        let mut rs = RenderState {
-            modelview: *self.modelview.last().expect("stack never empty"),
-            projection: *self.projection.last().expect("stack never empty"),
-            viewport: self.viewport,
-            depth_range: self.depth_range,
-            scissor: e.scissor_test.then_some(self.scissor_box),
-            cull: e.cull_face.then_some(self.cull_face),
-            front_face: self.front_face,
-            shade_model: self.shade_model,
-            depth_test: e.depth_test.then_some(self.depth_func),
-            depth_write: self.depth_mask,
-            color_mask: self.color_mask,
-            stencil_writemask: self.stencil_writemask,
-            dither: e.dither,
-            line_width: pl.line_width,
-            line_smooth: e.line_smooth,
-            point_size: pl.point_size,
-            point_smooth: e.point_smooth,
-            perspective: quality(self.hints.perspective_correction),
-            line_quality: quality(self.hints.line_smooth),
-            point_quality: quality(self.hints.point_smooth),
-            ..RenderState::new(self.viewport.width, self.viewport.height)
-        };
-        self.fragment_render_state(&mut rs);
-        self.texture_render_state(&mut rs);
-        self.geometry_render_state(&mut rs);
-        rs
+        rs.modelview = *self.modelview.last().expect("stack never empty");
+        rs.projection = *self.projection.last().expect("stack never empty");
+        rs.viewport = self.viewport;
+        rs.depth_range = self.depth_range;
+        rs.scissor = e.scissor_test.then_some(self.scissor_box);
+        rs.cull = e.cull_face.then_some(self.cull_face);
+        rs.front_face = self.front_face;
+        rs.shade_model = self.shade_model;
+        rs.depth_test = e.depth_test.then_some(self.depth_func);
+        rs.depth_write = self.depth_mask;
+        rs.color_mask = self.color_mask;
+        rs.stencil_writemask = self.stencil_writemask;
+        rs.dither = e.dither;
+        rs.line_width = pl.line_width;
+        rs.line_smooth = e.line_smooth;
+        rs.point_size = pl.point_size;
+        rs.point_smooth = e.point_smooth;
+        rs.perspective = quality(self.hints.perspective_correction);
+        rs.line_quality = quality(self.hints.line_smooth);
+        rs.point_quality = quality(self.hints.point_smooth);
+        // Set per sample plane by the core when it draws into a multisampled target.
+        rs.sample = None;
+        self.fragment_render_state(rs);
+        self.texture_render_state(rs);
+        self.geometry_render_state(rs);
     }
 
     /// The vertex-stage part of the core's state: lighting, normal processing, user clip
@@ -453,7 +523,7 @@ impl Context {
         use gles_cm_core::state;
         let e = &self.enables;
         let l = &self.lighting;
-        rs.lighting = e.lighting.then(|| {
+        if e.lighting {
             let v4 = Vec4::from_array;
             let material = state::Material {
                 ambient: v4(l.material.ambient),
@@ -462,9 +532,10 @@ impl Context {
                 emission: v4(l.material.emission),
                 shininess: l.material.shininess,
             };
-            state::Lighting {
-                lights: l
-                    .lights
+            let mut lights = rs.lighting.take().map(|l| l.lights).unwrap_or_default();
+            lights.clear();
+            lights.extend(
+                l.lights
                     .iter()
                     .zip(e.light)
                     .filter(|(_, on)| *on)
@@ -481,26 +552,31 @@ impl Context {
                             g.linear_attenuation,
                             g.quadratic_attenuation,
                         ],
-                    })
-                    .collect(),
+                    }),
+            );
+            rs.lighting = Some(state::Lighting {
+                lights,
                 model_ambient: v4(l.model_ambient),
                 two_side: l.two_side,
                 front: material,
                 back: material,
                 color_material: e.color_material,
                 clamp_after_lighting: true,
-            }
-        });
+            });
+        } else {
+            rs.lighting = None;
+        }
         rs.normalize = e.normalize;
         rs.rescale_normal = e.rescale_normal;
-        rs.clip_planes = self
-            .clip_planes
-            .planes
-            .iter()
-            .zip(e.clip_plane)
-            .filter(|(_, on)| *on)
-            .map(|(p, _)| Vec4::from_array(*p))
-            .collect();
+        rs.clip_planes.clear();
+        rs.clip_planes.extend(
+            self.clip_planes
+                .planes
+                .iter()
+                .zip(e.clip_plane)
+                .filter(|(_, on)| *on)
+                .map(|(p, _)| Vec4::from_array(*p)),
+        );
         rs.texture_matrices =
             std::array::from_fn(|u| *self.texture[u].last().expect("stack never empty"));
         let pl = &self.points_lines;
@@ -510,7 +586,13 @@ impl Context {
             attenuation: pl.point_distance_attenuation,
             fade_threshold: pl.point_fade_threshold_size,
         };
-        rs.matrix_palette = e.matrix_palette.then(|| self.palette.to_vec());
+        if e.matrix_palette {
+            let palette = rs.matrix_palette.get_or_insert_with(Vec::new);
+            palette.clear();
+            palette.extend_from_slice(&self.palette);
+        } else {
+            rs.matrix_palette = None;
+        }
     }
 }
 

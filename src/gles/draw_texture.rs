@@ -59,7 +59,7 @@ impl Context {
         if !(x0 < x1 && y0 < y1) {
             return;
         }
-        let mut rs = self.render_state();
+        let mut rs = self.take_render_state();
         let (vw, vh) = ((b.x1 - b.x0) as f64, (b.y1 - b.y0) as f64);
         rs.viewport = gles_cm_core::Viewport {
             x: b.x0,
@@ -134,9 +134,10 @@ impl Context {
                 call.texcoord[u] = AttribSource::Array(array(data));
             }
         }
-        if let Some(Err(_)) =
-            self.with_frame(|frame, to| gles_cm_core::record_into(&rs, &call, frame, to))
-        {
+        let recorded =
+            self.with_frame(|frame, to| gles_cm_core::record_into(&rs, &call, frame, to));
+        self.put_back_render_state(rs);
+        if let Some(Err(_)) = recorded {
             self.set_error(GL_OUT_OF_MEMORY);
         }
     }

@@ -31,12 +31,13 @@ impl Context {
         if !self.framebuffer_ready() {
             return;
         }
-        let state = self.render_state();
+        // Only the scissor box limits a clear.
+        let scissor = self.enables.scissor_test.then_some(self.scissor_box);
         let (color, depth, stencil) = (self.clear_color, self.clear_depth, self.clear_stencil);
         let (color_mask, depth_mask, stencil_mask) =
             (self.color_mask, self.depth_mask, self.stencil_writemask);
         self.with_frame(|frame, _| {
-            let rect = state.pixel_bounds(frame.bounds());
+            let rect = scissor.map_or(frame.bounds(), |s| frame.bounds().intersect(s));
             let format = frame.format();
             if mask & GL_COLOR_BUFFER_BIT != 0 {
                 frame.clear_color(rect, format.color.encode(color), keep_mask(color_mask));

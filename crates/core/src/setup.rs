@@ -247,11 +247,14 @@ pub(crate) type PlaneBuilder<'a> = &'a dyn Fn(&dyn Fn(usize) -> f64) -> Plane;
 
 /// The texture and fog planes of a primitive with vertices `v` (and 1/w `inv_w`):
 /// `plane(f)` builds the plane through the per-vertex values `f(i)`, i indexing `v`.
+/// `spare` is storage for the texture planes that the caller no longer needs (a reused
+/// primitive's): a textured triangle then allocates nothing.
 pub(crate) fn attribute_planes(
     state: &RenderState,
     v: &[VertexRef<'_>],
     inv_w: &[f64],
     plane: PlaneBuilder<'_>,
+    spare: Option<UnitPlanes>,
 ) -> (Option<UnitPlanes>, Plane) {
     let fog = match &state.fog {
         Some(f) => {
@@ -267,9 +270,12 @@ pub(crate) fn attribute_planes(
     if state.textures.iter().all(Option::is_none) {
         return (None, fog);
     }
-    let mut planes = Box::new([TexPlanes::default(); TEXTURE_UNITS]);
+    let mut planes = spare.unwrap_or_default();
     for (u, unit) in state.textures.iter().enumerate() {
-        let Some(unit) = unit else { continue };
+        let Some(unit) = unit else {
+            planes[u] = TexPlanes::default();
+            continue;
+        };
         // Primitives have at most three vertices: arrays, not a heap allocation each.
         let n = v.len();
         let (mut q, mut s, mut t) = ([0.0; 3], [0.0; 3], [0.0; 3]);
@@ -284,7 +290,12 @@ pub(crate) fn attribute_planes(
         planes[u] = TexPlanes {
             s: plane(&|i| (s[i] - os * q[i]) * inv_w[i]),
             t: plane(&|i| (t[i] - ot * q[i]) * inv_w[i]),
-            r: plane(&|i| v[i].tex(u).z as f64 * inv_w[i]),
+            // r is read only as a cube map's third coordinate.
+            r: if unit.sampler.cube.is_some() {
+                plane(&|i| v[i].tex(u).z as f64 * inv_w[i])
+            } else {
+                Plane::ZERO
+            },
             q: plane(&|i| q[i] * inv_w[i]),
         };
     }
@@ -527,13 +538,14 @@ pub fn triangle<'v, 's>(
         Planes4::through(&weights, [c(0), c(1), c(2)])
     };
     shading.coverage = None;
-    (shading.tex, shading.fog) = (None, Plane::ZERO);
+    let spare = shading.tex.take();
+    shading.fog = Plane::ZERO;
     // Checked here too: without fog or textures the call would build nothing. Assigned
     // field by field rather than chosen as a pair first: the chosen pair was stored and
     // read back across two stores, a store-forwarding stall in every triangle's set-up.
     if state.fog.is_some() || state.textures.iter().any(Option::is_some) {
         (shading.tex, shading.fog) =
-            attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]));
+            attribute_planes(state, &v, &inv_w, &|f| through([f(0), f(1), f(2)]), spare);
     }
     true
 }

@@ -76,7 +76,7 @@ pub fn setup(
     let along = |va: f64, vb: f64| plane_along((ax, ay), d, len2, va, vb);
     let flat = flat.map(|v| v.color().to_array());
     let (tex, fog) =
-        crate::setup::attribute_planes(state, &[a, b], &[aw, bw], &|f| along(f(0), f(1)));
+        crate::setup::attribute_planes(state, &[a, b], &[aw, bw], &|f| along(f(0), f(1)), None);
     let shading = |coverage| Shading {
         origin: (0, 0),
         z: along(az, bz),

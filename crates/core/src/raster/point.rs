@@ -74,7 +74,8 @@ pub fn setup(state: &RenderState, v: VertexRef<'_>, bounds: Rect) -> Option<Poin
     // sprites (OES_point_sprite) replace s and t on units with COORD_REPLACE: with the
     // fragment at pixel (x_f, y_f), s = ½ + (x_f + ½ − x_w)/size and
     // t = ½ − (y_f + ½ − y_w)/size, (x_w, y_w) the center of the square drawn.
-    let (mut tex, fog) = crate::setup::attribute_planes(state, &[v], &[1.0], &|f| constant(f(0)));
+    let (mut tex, fog) =
+        crate::setup::attribute_planes(state, &[v], &[1.0], &|f| constant(f(0)), None);
     if let Some(planes) = tex.as_mut() {
         let sprite = state.point_sprite;
         let s = size.round().max(1.0);
