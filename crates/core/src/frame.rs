@@ -20,7 +20,7 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use super::fragment::FragmentKey;
 use super::pool::{self, thread_count, together, Spread};
 use super::raster::Prim;
-use super::setup::{Triangle, TriangleSlot};
+use super::setup::{Triangle, TriangleSlot, UnitPlanes};
 use super::target::{BandMut, Rect, SharedTarget, Target, TargetFormat};
 
 /// Rows per band: small enough that several bands per thread balance the load, large
@@ -87,6 +87,12 @@ impl PrimList {
 
     pub fn as_slice(&self) -> &[Prim] {
         &self.prims[..self.live]
+    }
+
+    /// The texture-plane storage of the old primitive the next one replaces, if it has
+    /// any: a textured point or line set up with it allocates nothing.
+    pub fn spare_planes(&mut self) -> Option<UnitPlanes> {
+        self.prims.get_mut(self.live).and_then(Prim::take_planes)
     }
 }
 
@@ -166,6 +172,11 @@ impl Frame {
     /// True when the frame holds enough work that it should be flushed before more is added.
     pub fn is_full(&self) -> bool {
         self.prims.live >= MAX_PENDING || self.planes.iter().any(Frame::is_full)
+    }
+
+    /// [`PrimList::spare_planes`] of the frame's list.
+    pub fn spare_planes(&mut self) -> Option<UnitPlanes> {
+        self.prims.spare_planes()
     }
 
     /// Registers the fragment state for the primitives that follow, returning its number.

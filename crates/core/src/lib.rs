@@ -208,12 +208,18 @@ fn record_serially<'a>(
 /// triangle in the slot it is set up in.
 trait Sink: setup::TriangleSlot {
     fn push(&mut self, p: raster::Prim);
+    /// Texture-plane storage for the next point or line ([`frame::PrimList::spare_planes`]).
+    fn spare_planes(&mut self) -> Option<setup::UnitPlanes>;
 }
 
 /// A piece's own list, binned later.
 impl Sink for frame::PrimList {
     fn push(&mut self, p: raster::Prim) {
         frame::PrimList::push(self, p);
+    }
+
+    fn spare_planes(&mut self) -> Option<setup::UnitPlanes> {
+        frame::PrimList::spare_planes(self)
     }
 }
 
@@ -232,6 +238,10 @@ impl setup::TriangleSlot for Binned<'_> {
 impl Sink for Binned<'_> {
     fn push(&mut self, p: raster::Prim) {
         self.frame.prim(p, self.key);
+    }
+
+    fn spare_planes(&mut self) -> Option<setup::UnitPlanes> {
+        self.frame.spare_planes()
     }
 }
 
@@ -317,7 +327,7 @@ fn set_up_vertices(
         for k in 0..draw.indices.len() {
             let v = vertices.get(draw.indices.get(k));
             if clip::point(v) {
-                if let Some(p) = raster::point::setup(state, v, bounds) {
+                if let Some(p) = raster::point::setup(state, v, bounds, out.spare_planes()) {
                     out.push(raster::Prim::Point(p));
                 }
             }
@@ -326,7 +336,10 @@ fn set_up_vertices(
         prim.for_each_line(&draw.indices, |a, b| {
             let (va, vb) = (vertices.get(a), vertices.get(b));
             clip::line(va, vb, |ca, cb| {
-                if let Some(l) = raster::line::setup(state, ca, cb, flat.then_some(vb), bounds) {
+                let spare = out.spare_planes();
+                if let Some(l) =
+                    raster::line::setup(state, ca, cb, flat.then_some(vb), bounds, spare)
+                {
                     out.push(raster::Prim::Line(l));
                 }
             });

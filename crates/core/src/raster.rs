@@ -5,7 +5,7 @@ pub mod line;
 pub mod point;
 pub mod triangle;
 
-use super::setup::{Shading, Triangle};
+use super::setup::{Shading, Triangle, UnitPlanes};
 use super::target::Rect;
 
 pub use line::Line;
@@ -57,6 +57,19 @@ impl Prim {
             Prim::Line(l) => &l.shading,
             Prim::Point(p) => &p.shading,
         }
+    }
+
+    fn shading_mut(&mut self) -> &mut Shading {
+        match self {
+            Prim::Triangle(t) => &mut t.shading,
+            Prim::Line(l) => &mut l.shading,
+            Prim::Point(p) => &mut p.shading,
+        }
+    }
+
+    /// The texture-plane storage of this old primitive, for the one set up in its place.
+    pub fn take_planes(&mut self) -> Option<UnitPlanes> {
+        self.shading_mut().tex.take()
     }
 
     /// Calls `emit` for every span of the primitive on rows `rows`.

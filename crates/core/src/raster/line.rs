@@ -13,7 +13,7 @@
 //! Colors and depth are interpolated with t, the projection of the pixel center onto the
 //! segment, perspective-correctly for colors and linearly for depth.
 
-use super::super::setup::{Coverage, Plane, Planes4, Shading, Shape};
+use super::super::setup::{Coverage, Plane, Planes4, Shading, Shape, UnitPlanes};
 use super::super::state::RenderState;
 use super::super::target::Rect;
 use super::super::vertex::VertexRef;
@@ -58,13 +58,14 @@ fn plane_along(a: (f64, f64), d: (f64, f64), len2: f64, va: f64, vb: f64) -> Pla
 
 /// Sets up clipped segment (a, b) for rasterization inside `bounds`. `flat` is the vertex
 /// whose color the whole segment takes ([`crate::flat_colors`]), `None` when colors are
-/// interpolated.
+/// interpolated; `spare`, storage for the texture planes ([`crate::setup::attribute_planes`]).
 pub fn setup(
     state: &RenderState,
     a: VertexRef<'_>,
     b: VertexRef<'_>,
     flat: Option<VertexRef<'_>>,
     bounds: Rect,
+    spare: Option<UnitPlanes>,
 ) -> Option<Line> {
     let (ax, ay, az, aw) = window(state, a.pos())?;
     let (bx, by, bz, bw) = window(state, b.pos())?;
@@ -76,8 +77,8 @@ pub fn setup(
     let along = |va: f64, vb: f64| plane_along((ax, ay), d, len2, va, vb);
     let flat = flat.map(|v| v.color().to_array());
     let (tex, fog) =
-        crate::setup::attribute_planes(state, &[a, b], &[aw, bw], &|f| along(f(0), f(1)), None);
-    let shading = |coverage| Shading {
+        crate::setup::attribute_planes(state, &[a, b], &[aw, bw], &|f| along(f(0), f(1)), spare);
+    let shading = move |coverage| Shading {
         origin: (0, 0),
         z: along(az, bz),
         inv_w: along(aw, bw),
@@ -90,7 +91,7 @@ pub fn setup(
         },
         flat,
         coverage,
-        tex: tex.clone(),
+        tex,
         fog,
     };
     let width = state.line_width.clamp(1.0, MAX_LINE_WIDTH) as f64;

@@ -5,7 +5,7 @@
 //! position; each fragment's alpha is multiplied by the covered share of its pixel. A point
 //! is one color and one depth.
 
-use super::super::setup::{Coverage, Plane, Planes4, Shading, Shape};
+use super::super::setup::{Coverage, Plane, Planes4, Shading, Shape, UnitPlanes};
 use super::super::state::RenderState;
 use super::super::target::Rect;
 use super::super::vertex::VertexRef;
@@ -19,7 +19,13 @@ pub struct Point {
 
 /// Sets up point `v` (already known to be inside the clip volume) for rasterization inside
 /// `bounds`.
-pub fn setup(state: &RenderState, v: VertexRef<'_>, bounds: Rect) -> Option<Point> {
+/// `spare`: storage for the texture planes (see [`crate::setup::attribute_planes`]).
+pub fn setup(
+    state: &RenderState,
+    v: VertexRef<'_>,
+    bounds: Rect,
+    spare: Option<UnitPlanes>,
+) -> Option<Point> {
     let (x, y, z, _) = window(state, v.pos())?;
     // The vertex stage derived the size (state or array, attenuation, min and max); here it
     // is clamped to the supported range (NaN: 1).
@@ -75,7 +81,7 @@ pub fn setup(state: &RenderState, v: VertexRef<'_>, bounds: Rect) -> Option<Poin
     // fragment at pixel (x_f, y_f), s = ½ + (x_f + ½ − x_w)/size and
     // t = ½ − (y_f + ½ − y_w)/size, (x_w, y_w) the center of the square drawn.
     let (mut tex, fog) =
-        crate::setup::attribute_planes(state, &[v], &[1.0], &|f| constant(f(0)), None);
+        crate::setup::attribute_planes(state, &[v], &[1.0], &|f| constant(f(0)), spare);
     if let Some(planes) = tex.as_mut() {
         let sprite = state.point_sprite;
         let s = size.round().max(1.0);
