@@ -58,7 +58,7 @@ fn plane_along(a: (f64, f64), d: (f64, f64), len2: f64, va: f64, vb: f64) -> Pla
 
 /// Sets up clipped segment (a, b) for rasterization inside `bounds`. `flat` is the vertex
 /// whose color the whole segment takes ([`crate::flat_colors`]), `None` when colors are
-/// interpolated; `spare`, storage for the texture planes ([`crate::setup::attribute_planes`]).
+/// interpolated; `spare`, storage for the texture planes to reuse (`PrimList::spare_planes`).
 pub fn setup(
     state: &RenderState,
     a: VertexRef<'_>,

@@ -19,7 +19,7 @@ pub struct Point {
 
 /// Sets up point `v` (already known to be inside the clip volume) for rasterization inside
 /// `bounds`.
-/// `spare`: storage for the texture planes (see [`crate::setup::attribute_planes`]).
+/// `spare`: storage for the texture planes to reuse (`PrimList::spare_planes`).
 pub fn setup(
     state: &RenderState,
     v: VertexRef<'_>,
