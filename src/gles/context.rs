@@ -439,7 +439,11 @@ impl Context {
     }
 
     /// Keeps `rs` for the next draw (whatever a caller changed in it is written over then).
-    pub fn put_back_render_state(&mut self, rs: Box<RenderState>) {
+    /// Its texture snapshots are let go now: a kept snapshot shares the texture's images,
+    /// so a later `glTexSubImage2D` would copy a level instead of writing it in place, and
+    /// a deleted texture's images would live on (see `forget_snapshots`).
+    pub fn put_back_render_state(&mut self, mut rs: Box<RenderState>) {
+        rs.textures = Default::default();
         self.render_state = Some(rs);
     }
 
