@@ -37,7 +37,7 @@ impl Context {
         let (color_mask, depth_mask, stencil_mask) =
             (self.color_mask, self.depth_mask, self.stencil_writemask);
         self.with_frame(|frame, _| {
-            let rect = scissor.map_or(frame.bounds(), |s| frame.bounds().intersect(s));
+            let rect = frame.bounds().scissored(scissor);
             let format = frame.format();
             if mask & GL_COLOR_BUFFER_BIT != 0 {
                 frame.clear_color(rect, format.color.encode(color), keep_mask(color_mask));

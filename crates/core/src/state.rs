@@ -474,9 +474,6 @@ impl RenderState {
 
     /// The pixels a draw may touch in a target with `bounds`: those inside the scissor box.
     pub fn pixel_bounds(&self, b: Rect) -> Rect {
-        match self.scissor {
-            Some(s) => b.intersect(s),
-            None => b,
-        }
+        b.scissored(self.scissor)
     }
 }

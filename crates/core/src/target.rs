@@ -161,6 +161,14 @@ impl Rect {
     pub fn is_empty(self) -> bool {
         self.x0 >= self.x1 || self.y0 >= self.y1
     }
+
+    /// The part inside the scissor box, when there is one.
+    pub fn scissored(self, scissor: Option<Rect>) -> Rect {
+        match scissor {
+            Some(s) => self.intersect(s),
+            None => self,
+        }
+    }
 }
 
 /// A color, depth and stencil buffer set of one size.
