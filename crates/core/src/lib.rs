@@ -348,12 +348,8 @@ fn set_up_vertices(
         // Triangles are clipped to the guard band only: their pixels stop at the viewport.
         let vp = state.viewport;
         let bounds = bounds.intersect(Rect::new(vp.x, vp.y, vp.width, vp.height));
-        prim.for_each_triangle(&draw.indices, |a, b, c| {
-            let slots = [vertices.slot(a), vertices.slot(b), vertices.slot(c)];
-            // Most triangles outside the view end here, from three bytes.
-            if !vertices.rejects(slots[0], slots[1], slots[2]) {
-                set_up_triangle(state, vertices, slots, flat, bounds, depth, out);
-            }
+        vertices.for_each_kept_triangle(prim, &draw.indices, |slots| {
+            set_up_triangle(state, vertices, slots, flat, bounds, depth, out);
         });
     }
 }
