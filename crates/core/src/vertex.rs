@@ -360,23 +360,35 @@ impl Primitive {
     /// Calls `f` with the vertex numbers of every triangle the primitive assembles, in an
     /// order that keeps strip winding consistent; the third vertex is always the provoking
     /// one (the one whose color flat shading uses).
-    pub fn for_each_triangle(self, ix: &Indices<'_>, mut f: impl FnMut(usize, usize, usize)) {
-        let n = ix.len();
+    pub fn for_each_triangle(self, ix: &Indices<'_>, f: impl FnMut(usize, usize, usize)) {
+        self.triangles_of(ix.len(), |k| ix.get(k), f);
+    }
+
+    /// [`Primitive::for_each_triangle`] over `n` positions, `at(k)` what `f` is given for
+    /// position `k`: a vertex number, or (`Vertices::for_each_kept_triangle`) a slot. Inlined,
+    /// so a caller with one index type gets a loop of its own.
+    #[inline(always)]
+    fn triangles_of(
+        self,
+        n: usize,
+        at: impl Fn(usize) -> usize,
+        mut f: impl FnMut(usize, usize, usize),
+    ) {
         match self {
             Primitive::Triangles => {
                 for t in 0..n / 3 {
-                    f(ix.get(3 * t), ix.get(3 * t + 1), ix.get(3 * t + 2));
+                    f(at(3 * t), at(3 * t + 1), at(3 * t + 2));
                 }
             }
             Primitive::TriangleStrip => {
                 for t in 0..n.saturating_sub(2) {
                     let (a, b) = if t % 2 == 0 { (t, t + 1) } else { (t + 1, t) };
-                    f(ix.get(a), ix.get(b), ix.get(t + 2));
+                    f(at(a), at(b), at(t + 2));
                 }
             }
             Primitive::TriangleFan => {
                 for t in 0..n.saturating_sub(2) {
-                    f(ix.get(0), ix.get(t + 1), ix.get(t + 2));
+                    f(at(0), at(t + 1), at(t + 2));
                 }
             }
             _ => {}
@@ -605,12 +617,12 @@ impl Vertices {
     /// [`Primitive::for_each_triangle`] orders them) that [`rejects`] keeps: those not
     /// dropped by their vertices' codes alone.
     ///
-    /// Lists and strips over a dense range of vertex numbers (not `sparse`) walk the
-    /// indices in a loop of their own per index type, and consecutive vertices
-    /// (`glDrawArrays`) read their codes in order with no index or slot to look up: a
-    /// triangle dropped there costs about 15 instructions, where the general walk, with a
-    /// call per triangle and the index type matched per vertex, cost about 53
-    /// (lit-offscreen, whose 100 000 triangles a frame are all outside the view).
+    /// Over a dense range of vertex numbers (not `sparse`) each index type has a loop of its
+    /// own, with the slot a subtraction, and a list of consecutive vertices
+    /// (`glDrawArrays`) reads its codes three at a time: a triangle dropped there costs
+    /// about 12 instructions, where the general walk, with a call per triangle and the
+    /// index type matched per vertex, cost about 53 (lit-offscreen, whose 100 000
+    /// triangles a frame are all outside the view).
     pub fn for_each_kept_triangle(
         &self,
         prim: Primitive,
@@ -618,103 +630,36 @@ impl Vertices {
         mut f: impl FnMut([usize; 3]),
     ) {
         let base = self.base;
-        let walked = !self.sparse
-            && match *ix {
-                Indices::Range { first, count } => self.kept_in_order(prim, first, count, &mut f),
-                Indices::U8(i) => {
-                    self.kept_by_slot(prim, i.len(), |k| i[k] as usize - base, &mut f)
+        if let (Primitive::Triangles, Indices::Range { first, count }, false) =
+            (prim, *ix, self.sparse)
+        {
+            // Slots first − base ..: an empty draw keeps no codes, and no slot is read.
+            let s0 = first - base;
+            let codes = self.codes.get(s0..s0 + count / 3 * 3).unwrap_or_default();
+            for (t, c) in codes.chunks_exact(3).enumerate() {
+                if !rejects_codes(c[0], c[1], c[2]) {
+                    let s = s0 + 3 * t;
+                    f([s, s + 1, s + 2]);
                 }
-                Indices::U16(i) => {
-                    self.kept_by_slot(prim, i.len(), |k| i[k] as usize - base, &mut f)
-                }
-                Indices::U32(i) => {
-                    self.kept_by_slot(prim, i.len(), |k| i[k] as usize - base, &mut f)
-                }
-            };
-        if walked {
+            }
             return;
         }
-        prim.for_each_triangle(ix, |a, b, c| {
-            let slots = [self.slot(a), self.slot(b), self.slot(c)];
+        let mut kept = |a: usize, b: usize, c: usize| {
             // Most triangles outside the view end here, from three bytes.
-            if !self.rejects(slots[0], slots[1], slots[2]) {
-                f(slots);
-            }
-        });
-    }
-
-    /// [`Vertices::for_each_kept_triangle`] of a list or a strip of the `count`
-    /// consecutive vertices from number `first`; `false` for other primitives.
-    #[inline(always)]
-    fn kept_in_order(
-        &self,
-        prim: Primitive,
-        first: usize,
-        count: usize,
-        f: &mut impl FnMut([usize; 3]),
-    ) -> bool {
-        if count < 3 {
-            // No triangle (and an empty draw keeps no codes).
-            return matches!(prim, Primitive::Triangles | Primitive::TriangleStrip);
-        }
-        let s0 = first - self.base;
-        match prim {
-            Primitive::Triangles => {
-                let codes = &self.codes[s0..s0 + count / 3 * 3];
-                for (t, c) in codes.chunks_exact(3).enumerate() {
-                    if !rejects_codes(c[0], c[1], c[2]) {
-                        let s = s0 + 3 * t;
-                        f([s, s + 1, s + 2]);
-                    }
-                }
-            }
-            Primitive::TriangleStrip => {
-                let codes = &self.codes[s0..s0 + count];
-                for (t, c) in codes.windows(3).enumerate() {
-                    if !rejects_codes(c[0], c[1], c[2]) {
-                        let s = s0 + t;
-                        // Odd triangles swap their first two vertices, as
-                        // `for_each_triangle` does, to keep the winding.
-                        let (a, b) = if t % 2 == 0 { (s, s + 1) } else { (s + 1, s) };
-                        f([a, b, s + 2]);
-                    }
-                }
-            }
-            _ => return false,
-        }
-        true
-    }
-
-    /// [`Vertices::for_each_kept_triangle`] of a list or a strip of `n` indices, `slot(k)`
-    /// the slot of the vertex at position `k`; `false` for other primitives.
-    #[inline(always)]
-    fn kept_by_slot(
-        &self,
-        prim: Primitive,
-        n: usize,
-        slot: impl Fn(usize) -> usize,
-        f: &mut impl FnMut([usize; 3]),
-    ) -> bool {
-        let mut each = |s: [usize; 3]| {
-            if !self.rejects(s[0], s[1], s[2]) {
-                f(s);
+            if !self.rejects(a, b, c) {
+                f([a, b, c]);
             }
         };
-        match prim {
-            Primitive::Triangles => {
-                for t in 0..n / 3 {
-                    each([slot(3 * t), slot(3 * t + 1), slot(3 * t + 2)]);
-                }
-            }
-            Primitive::TriangleStrip => {
-                for t in 0..n.saturating_sub(2) {
-                    let (a, b) = if t % 2 == 0 { (t, t + 1) } else { (t + 1, t) };
-                    each([slot(a), slot(b), slot(t + 2)]);
-                }
-            }
-            _ => return false,
+        if self.sparse {
+            return prim
+                .for_each_triangle(ix, |a, b, c| kept(self.slot(a), self.slot(b), self.slot(c)));
         }
-        true
+        match *ix {
+            Indices::Range { first, count } => prim.triangles_of(count, |k| first - base + k, kept),
+            Indices::U8(i) => prim.triangles_of(i.len(), |k| i[k] as usize - base, kept),
+            Indices::U16(i) => prim.triangles_of(i.len(), |k| i[k] as usize - base, kept),
+            Indices::U32(i) => prim.triangles_of(i.len(), |k| i[k] as usize - base, kept),
+        }
     }
 
     /// Whether the triangle of the vertices in slots `a`, `b` and `c`, not rejected, may
@@ -1091,13 +1036,8 @@ mod tests {
     /// inside, outside one plane, and not finite, so each triangle may go either way).
     #[test]
     fn kept_triangles_match_the_general_walk() {
-        let mut rng = 0x2545_f491u32;
-        let mut next = || {
-            rng ^= rng << 13;
-            rng ^= rng >> 17;
-            rng ^= rng << 5;
-            rng
-        };
+        let mut rng = crate::tests::Lcg(0x2545_f491);
+        let mut next = |n: usize| (rng.next() * n as f32) as usize;
         let choices = [0, 0, 0, 1, 1, 2, CLIPS, NOT_FINITE];
         let (mut kept, mut dropped) = (0, 0);
         for prim in [
@@ -1109,13 +1049,13 @@ mod tests {
                 for _ in 0..20 {
                     let first = 5;
                     let vertices = Vertices {
-                        codes: (0..count).map(|_| choices[next() as usize % 8]).collect(),
+                        codes: (0..count).map(|_| choices[next(8)]).collect(),
                         base: first,
                         ..Vertices::default()
                     };
                     // The same vertices in order, and shuffled through each index type.
                     let order: Vec<usize> = (0..count)
-                        .map(|k| first + (k * 7 + next() as usize % 2) % count.max(1))
+                        .map(|k| first + (k * 7 + next(2)) % count.max(1))
                         .collect();
                     let (u8s, u16s, u32s): (Vec<u8>, Vec<u16>, Vec<u32>) = (
                         order.iter().map(|&i| i as u8).collect(),
